@@ -1,0 +1,14 @@
+/*
+ * mdr.h: umbrella header of libmdr. Include this one.
+ * Freestanding C99: needs only <stdint.h> and <stdbool.h>.
+ */
+#ifndef MDR_H
+#define MDR_H
+
+#include "mdr_types.h"
+#include "mdr_contact.h"
+
+#define MDR_VERSION_MAJOR 0
+#define MDR_VERSION_MINOR 1
+
+#endif /* MDR_H */

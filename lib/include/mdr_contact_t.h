@@ -1,0 +1,166 @@
+/*
+ * mdr_contact_t.h: declarations of one arithmetic of the contact module.
+ *
+ * Not a header to include directly: mdr_contact.h includes it once per
+ * arithmetic with MDR_T (float or double) and MDR_SFX(name) (name ## _f32 or
+ * name ## _f64) defined, so that every arithmetic has the same, once-written
+ * contract. Read it with T = float and suffix _f32.
+ *
+ * Model (seed chapter 4): a rigid axisymmetric profile f(r) against an elastic
+ * half-space of effective modulus E* with work of adhesion w. MDR maps it to a
+ * row of springs of stiffness E* per unit length pressed by the equivalent
+ * profile g(x) (seed eq. 4.46); the contact state is parameterised by its
+ * radius a:
+ *   dl(a) = sqrt(2*pi*a*w/E*)            rule of Hess, 4.1 / 4.21
+ *   d(a)  = g(a) - dl(a)                  4.25
+ *   F(a)  = 2*E*(a*d(a) - G(a)), G = int_0^a g dx           4.26
+ *   dd/da = g'(a) - dl/(2a),  dF/da = 2*E*(a*g'(a) - 1.5*dl)
+ *   K_I   = E*(g(a) - d)/sqrt(pi*a)       4.17 (= sqrt(2 E* w) at equilibrium)
+ *   G_rel = K_I^2/(2E*)                   4.14 (energy release rate)
+ */
+
+/** One contact scene: profile + material, with constants derived at init.
+ *  Caller-owned; fill it with mdr_contact_init_<type>() only. */
+typedef struct {
+    MDR_T E;     /**< effective modulus E* [Pa] */
+    MDR_T w;     /**< work of adhesion w [J/m^2] */
+    MDR_T p[3];  /**< profile parameters as given (see MDR_PROFILE_*) */
+    MDR_T c_dl;  /**< sqrt(2*pi*w/E*) [m^0.5]: dl(a) = c_dl*sqrt(a) */
+    MDR_T k[3];  /**< per-profile derived constants (see mdr_contact_*.c) */
+    uint8_t kind; /**< MDR_PROFILE_* */
+} MDR_SFX(mdr_contact);
+
+/** Equilibrium state at a given contact radius (all SI). */
+typedef struct {
+    MDR_T a;     /**< contact radius [m] */
+    MDR_T d;     /**< indentation depth [m], positive into the surface */
+    MDR_T F;     /**< normal force [N], compressive positive */
+    MDR_T dd_da; /**< dd/da [1] */
+    MDR_T dF_da; /**< dF/da [N/m] */
+    MDR_T dl;    /**< critical spring stretch dl(a) = sqrt(2 pi a w/E*) [m] */
+    MDR_T K_I;   /**< mode-I stress intensity factor [Pa m^0.5] */
+    MDR_T G;     /**< energy release rate K_I^2/(2E*) [J/m^2] (= w at equilibrium) */
+    bool stable_load;  /**< stable under fixed load: dF/da > 0 (4.23, k = 2/3) */
+    bool stable_grips; /**< stable under fixed grips: dd/da > 0 (4.23, k = 2) */
+} MDR_SFX(mdr_eqstate);
+
+/** A state on the equilibrium curve reached by quasi-static retraction. */
+typedef struct {
+    MDR_T a;        /**< contact radius [m]; 0 when the contact peels off continuously */
+    MDR_T d;        /**< indentation depth [m] */
+    MDR_T F;        /**< normal force [N] */
+    uint16_t jumps; /**< intermediate jumps (to a smaller stable radius) before this state */
+} MDR_SFX(mdr_critstate);
+
+/**
+ * @brief Validate a scene and derive its constants.
+ * @param[out] c     instance to fill; untouched unless MDR_OK is returned
+ * @param[in]  kind  MDR_PROFILE_*
+ * @param[in]  p     profile parameters, SI; meaning per kind (MDR_PROFILE_*):
+ *                   R > 0 [m]; theta in (0, pi/2) [rad]; C > 0 [m^(1-n)] and
+ *                   0 < n <= MDR_POWERLAW_N_MAX; a0 > 0 [m]; flattened tip
+ *                   R > 0, 0 <= b [m]; wavy R > 0, h >= 0, lambda > 0 [m].
+ *                   Unused entries are ignored (they may be anything).
+ * @param[in]  E     effective modulus E* > 0 [Pa]
+ * @param[in]  w     work of adhesion w >= 0 [J/m^2]; w = 0 is the
+ *                   non-adhesive contact exactly (dl = 0)
+ * @return MDR_OK, MDR_E_NULL, MDR_E_KIND, MDR_E_NONFINITE, MDR_E_PARAM
+ */
+mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind,
+                                     const MDR_T p[3], MDR_T E, MDR_T w);
+
+/**
+ * @brief Equivalent 1D profile at x: g(x), g'(x) and G(x) = int_0^x g.
+ * @param[in]  x   0 < x, and x < R (sphere), x <= a0 (flat punch) [m]
+ * @param[out] g   g(x) [m] (may be NULL)
+ * @param[out] dg  g'(x) [1] (may be NULL); +inf slopes (power law n < 1 at
+ *                 small x, flattened tip at x = b) give MDR_E_OVERFLOW
+ * @param[out] G   int_0^x g(s) ds [m^2] (may be NULL)
+ * @return MDR_OK, MDR_E_NULL (c), MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_OVERFLOW
+ */
+mdr_status MDR_SFX(mdr_profile_eval)(const MDR_SFX(mdr_contact) *c, MDR_T x,
+                                     MDR_T *g, MDR_T *dg, MDR_T *G);
+
+/**
+ * @brief Equilibrium (Griffith) state at contact radius a: seed 4.19-4.26.
+ * @param[in]  a    contact radius, same domain as mdr_profile_eval() [m]
+ * @param[out] out  filled only on MDR_OK
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_OVERFLOW
+ *         (e.g. g' infinite at a = b of the flattened tip)
+ */
+mdr_status MDR_SFX(mdr_eq)(const MDR_SFX(mdr_contact) *c, MDR_T a,
+                           MDR_SFX(mdr_eqstate) *out);
+
+/**
+ * @brief Stress intensity and energy release rate of any state (a, d),
+ *        pinned or in equilibrium: K_I = E*(g(a) - d)/sqrt(pi a) (4.17),
+ *        G = K_I^2/(2E*) (4.14).
+ * @param[in]  a    contact radius [m]
+ * @param[in]  d    indentation depth [m] (any finite value)
+ * @param[out] K_I  [Pa m^0.5]; negative when the edge is compressed
+ * @param[out] G    [J/m^2] (may be NULL)
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_OVERFLOW
+ */
+mdr_status MDR_SFX(mdr_stress_intensity)(const MDR_SFX(mdr_contact) *c, MDR_T a,
+                                         MDR_T d, MDR_T *K_I, MDR_T *G);
+
+/**
+ * @brief Normal stress sigma_zz(r) inside a contact of radius a held at depth
+ *        d (4.27): sigma = -(E* /pi) int_r^a g'(x)/sqrt(x^2-r^2) dx
+ *                          + E*(g(a)-d)/(pi sqrt(a^2-r^2)).
+ *        Negative in compression; the second term is the adhesive (tensile)
+ *        edge singularity. Paraboloid, cone, flat punch: closed forms;
+ *        other profiles: tanh-sinh quadrature (relative error < 1e-6 in f32,
+ *        < 1e-12 in f64 of the integral; see mdr_contact_t.c).
+ * @param[in] r  radial position, 0 <= r < a [m]; r > 0 for the cone and the
+ *               power law with n <= 1; r != b for the flattened tip
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_POSITION,
+ *         MDR_E_SINGULAR, MDR_E_OVERFLOW
+ */
+mdr_status MDR_SFX(mdr_stress_at)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T d,
+                                  MDR_T r, MDR_T *sigma);
+
+/** @brief sigma_zz(r) in the equilibrium state of radius a (d = d(a)); see
+ *         mdr_stress_at(). Same errors. */
+mdr_status MDR_SFX(mdr_stress)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T r,
+                               MDR_T *sigma);
+
+/**
+ * @brief Critical (pull-off) state of quasi-static retraction.
+ *
+ * Starting in equilibrium at radius a_start, the controlled variable
+ * (F, d or z = d + F/k_m) is decreased slowly. The contact follows the stable
+ * branch; where the branch ends (dc/da = 0) it jumps at constant control to
+ * the next stable equilibrium with a smaller radius (counted in jumps). The
+ * result is the last stable state before complete separation: for a smooth
+ * paraboloid the JKR pull-off, for the flat punch Kendall's rupture (4.63),
+ * for the flattened tip with b > 0.7475 a* the state at a = b. If the branch
+ * peels stably all the way to a -> 0 (w = 0, or a power law with n < 1/2),
+ * the result is a = d = F = 0.
+ *
+ * Method: scan a downward on a geometric grid (step 1.5 %, at most lambda/16
+ * for the wavy profile), bisection on dc/da and on c(a) - c* to machine
+ * precision; fixed caps MDR_CRIT_SCAN_MAX scan steps, 200 bisection steps.
+ *
+ * @param[in]  control  MDR_CONTROL_LOAD, _GRIPS or _MACHINE
+ * @param[in]  k_m      machine stiffness [N/m], finite > 0; used only for
+ *                      MDR_CONTROL_MACHINE (ignored otherwise)
+ * @param[in]  a_start  starting radius [m] in the profile's domain (see
+ *                      mdr_default_start())
+ * @param[out] out      filled only on MDR_OK
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_CONTROL,
+ *         MDR_E_NOCONV, MDR_E_OVERFLOW
+ */
+mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
+                                 MDR_T k_m, MDR_T a_start,
+                                 MDR_SFX(mdr_critstate) *out);
+
+/**
+ * @brief A starting radius for mdr_critical() well inside the contact:
+ *        3 x the radius a_x where g(a_x) = dl(a_x) (for power laws with
+ *        n < 1/2: a_x/3), capped at a0 (flat punch) and 0.9 R (sphere) and at
+ *        least 1.5 b (flattened tip); without adhesion the profile's length.
+ * @param[out] a_start [m]
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NOCONV
+ */
+mdr_status MDR_SFX(mdr_default_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_start);

@@ -1,0 +1,71 @@
+/*
+ * libmdr: adhesive (JKR-type) normal contact of axisymmetric bodies by the
+ * Method of Dimensionality Reduction.
+ *
+ * mdr_types.h: status codes, profile kinds and control modes shared by every
+ * arithmetic. Needs only <stdint.h> and <stdbool.h>.
+ *
+ * Conventions used throughout the library (SI units everywhere):
+ *   - compressive normal force F is positive, adhesive (tensile) force negative;
+ *   - indentation depth d is positive into the surface;
+ *   - normal stress sigma is negative in compression (seed eq. 4.42);
+ *   - w is the WORK of adhesion (Dupre energy, seed eq. 4.5), not the surface
+ *     energy of one body: a paraboloid pulls off at F = -1.5*pi*w*R.
+ */
+#ifndef MDR_TYPES_H
+#define MDR_TYPES_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+/** Status code of every fallible call: MDR_OK or a negative named error.
+ *  int8_t, not an enum, so that its size is the same on every ABI. */
+typedef int8_t mdr_status;
+
+#define MDR_OK 0
+/** A required pointer argument is NULL. */
+#define MDR_E_NULL (-1)
+/** An input is NaN or +-inf. */
+#define MDR_E_NONFINITE (-2)
+/** A material or profile parameter is outside its documented range. */
+#define MDR_E_PARAM (-3)
+/** Unknown profile kind. */
+#define MDR_E_KIND (-4)
+/** Contact radius a outside the profile's domain (a <= 0, a >= R for the
+ *  exact sphere, a > a0 for the flat punch). */
+#define MDR_E_RADIUS (-5)
+/** Radial position r outside [0, a). */
+#define MDR_E_POSITION (-6)
+/** Unknown control mode, or machine stiffness k_m not finite and > 0. */
+#define MDR_E_CONTROL (-7)
+/** An iteration reached its fixed cap without converging. */
+#define MDR_E_NOCONV (-8)
+/** The requested quantity is infinite at this point (stress at the tip of a
+ *  cone or of a power law with n <= 1, at the rim r = b of a flattened tip). */
+#define MDR_E_SINGULAR (-9)
+/** A result would overflow the arithmetic's range (no inf or NaN escapes). */
+#define MDR_E_OVERFLOW (-10)
+
+/** Profile kinds (uint8_t values; the meaning of p[0..2] for each). */
+#define MDR_PROFILE_PARABOLOID 1u /**< f = r^2/(2R);          p = {R}            */
+#define MDR_PROFILE_CONE 2u       /**< f = tan(theta)*r;      p = {theta [rad]}  */
+#define MDR_PROFILE_POWERLAW 3u   /**< f = C*r^n;             p = {C [m^(1-n)], n} */
+#define MDR_PROFILE_FLATPUNCH 4u  /**< flat cylinder radius a0; p = {a0}          */
+#define MDR_PROFILE_SPHERE 5u     /**< f = R - sqrt(R^2-r^2); p = {R}            */
+#define MDR_PROFILE_FLATTIP 6u    /**< paraboloid, flat for r<b; p = {R, b}      */
+#define MDR_PROFILE_WAVY 7u       /**< r^2/(2R)+h(1-cos(2 pi r/lambda)); p = {R, h, lambda} */
+
+/** Control modes: what the device holds fixed while the contact evolves. */
+#define MDR_CONTROL_LOAD 1u    /**< force F controlled (fixed load, k = 2/3 in 4.23)  */
+#define MDR_CONTROL_GRIPS 2u   /**< depth d controlled (fixed grips, k = 2 in 4.23)  */
+#define MDR_CONTROL_MACHINE 3u /**< base z = d + F/k_m controlled through stiffness k_m */
+
+/** Largest power-law exponent accepted (keeps a^n inside float range for
+ *  every contact radius between 1e-12 m and 1 m). */
+#define MDR_POWERLAW_N_MAX 8
+
+/** Short English name of a status code ("ok", "null pointer", ...).
+ *  Never returns NULL; unknown codes give "unknown status". */
+const char *mdr_status_str(mdr_status s);
+
+#endif /* MDR_TYPES_H */

@@ -1,0 +1,66 @@
+/*
+ * mdr_arith.h: the macros that make one template source serve every floating
+ * arithmetic. A translation unit defines MDR_ARITH_F32 or MDR_ARITH_F64 and
+ * then includes this file and the *_t.h / *_t.c templates.
+ *
+ *   MDR_T          the real type
+ *   MDR_SFX(n)     n_f32 / n_f64 (public and internal names)
+ *   MDR_K(x)       a literal of type MDR_T: write every literal with a decimal
+ *                  point or exponent (MDR_K(2.0), MDR_K(1e-3)), never MDR_K(2)
+ *   MDR_UINT       unsigned integer of the same width (bit access)
+ *   MDR_MANT_BITS  stored mantissa bits; MDR_EXP_BIAS exponent bias
+ *   MDR_EPS        unit roundoff 2^-p (half an ulp of 1)
+ *   MDR_SQRT(x)    the port's square-root hook, or our own routine
+ */
+#ifndef MDR_ARITH_H
+#define MDR_ARITH_H
+
+#include <float.h>
+#include <stdint.h>
+
+#include "mdr_port.h"
+
+#if defined(MDR_ARITH_F32)
+#define MDR_T float
+#define MDR_SFX(name) name##_f32
+#define MDR_K(x) x##f
+#define MDR_UINT uint32_t
+#define MDR_MANT_BITS 23
+#define MDR_EXP_BIAS 127
+#define MDR_EXP_MAX 127
+#define MDR_EPS MDR_K(5.9604644775390625e-8)
+#define MDR_MAXV FLT_MAX
+#define MDR_MINV FLT_MIN
+#ifdef MDR_PORT_SQRT_F32
+#define MDR_SQRT(x) MDR_PORT_SQRT_F32(x)
+#else
+#define MDR_SQRT(x) mdr_m_sqrt_f32(x)
+#endif
+#elif defined(MDR_ARITH_F64)
+#define MDR_T double
+#define MDR_SFX(name) name##_f64
+#define MDR_K(x) x
+#define MDR_UINT uint64_t
+#define MDR_MANT_BITS 52
+#define MDR_EXP_BIAS 1023
+#define MDR_EXP_MAX 1023
+#define MDR_EPS MDR_K(1.1102230246251565e-16)
+#define MDR_MAXV DBL_MAX
+#define MDR_MINV DBL_MIN
+#ifdef MDR_PORT_SQRT_F64
+#define MDR_SQRT(x) MDR_PORT_SQRT_F64(x)
+#else
+#define MDR_SQRT(x) mdr_m_sqrt_f64(x)
+#endif
+#else
+#error "define MDR_ARITH_F32 or MDR_ARITH_F64 before including mdr_arith.h"
+#endif
+
+#ifndef MDR_ASSERT
+#define MDR_ASSERT(cond) ((void)0)
+#endif
+
+#define MDR_PI MDR_K(3.14159265358979323846264338327950288)
+#define MDR_LN2 MDR_K(0.693147180559945309417232121458176568)
+
+#endif /* MDR_ARITH_H */
