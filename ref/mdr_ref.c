@@ -394,7 +394,7 @@ int ref_critical(const ref_scene *s, int control, double k_m, double a_start, re
                 if (an <= amin) {
                     break;
                 }
-                if (c_value(an, &c) <= 0) {
+                if (c_value(an, &c) < 0) {
                     found = 1;
                     break;
                 }

@@ -425,6 +425,15 @@ static mdr_status MDR_SFX(mdr_c_ctrl)(const MDR_SFX(mdr_contact) *c, uint8_t con
                                       MDR_T *v, MDR_T *dv, MDR_SFX(mdr_eqstate) *e)
 {
     mdr_status st = MDR_SFX(mdr_c_eq)(c, a, e);
+    if (st == MDR_E_OVERFLOW && c->kind == MDR_PROFILE_FLATTIP && a == c->k[1]) {
+        /* the rim of the flat, where g' = +inf: the limit from above (stable,
+         * slope +inf) with d, F continuous (g(b) = G(b) = 0) */
+        e->d = MDR_K(0.0) - e->dl; /* +0, not -0, without adhesion */
+        e->F = MDR_K(0.0) - MDR_K(2.0) * c->E * a * e->dl;
+        *v = control == MDR_CONTROL_LOAD ? e->F : (control == MDR_CONTROL_GRIPS ? e->d : e->d + e->F / km);
+        *dv = MDR_MAXV;
+        return MDR_OK;
+    }
     if (st != MDR_OK) {
         return st;
     }
@@ -525,10 +534,6 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
                         break;
                     }
                     st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, mid, &vm, &dvm, &em);
-                    if (st == MDR_E_OVERFLOW && c->kind == MDR_PROFILE_FLATTIP) {
-                        lo = mid; /* g' infinite exactly at b: the kink itself */
-                        continue;
-                    }
                     if (st != MDR_OK) {
                         return st;
                     }
@@ -568,7 +573,7 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
                 if (st != MDR_OK) {
                     return st;
                 }
-                if (vn <= vstar) {
+                if (vn < vstar) {
                     found = true;
                     break;
                 }
@@ -582,7 +587,9 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
                 out->jumps = jumps;
                 return MDR_OK;
             }
-            /* bisection on c(a) - c*: lo has c <= c*, hi has c > c* */
+            /* bisection on c(a) - c*: lo has c < c*, hi has c >= c* (strict, so a
+             * profile with c constant, e.g. the flat punch without adhesion,
+             * separates instead of landing where it stands) */
             {
                 MDR_T lo = an, hi = ap;
                 for (it = 0; it < MDR_CRIT_BISECT; it++) {
@@ -595,7 +602,7 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
                     if (st != MDR_OK) {
                         return st;
                     }
-                    if (vm <= vstar) {
+                    if (vm < vstar) {
                         lo = mid;
                     } else {
                         hi = mid;

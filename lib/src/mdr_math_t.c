@@ -209,18 +209,19 @@ MDR_T MDR_SFX(mdr_m_powscaled)(MDR_T c, MDR_T x, MDR_T y)
     if (y > MDR_K(0.0) && y <= MDR_K(16.0) && (MDR_T)(int)(y * MDR_K(2.0)) == y * MDR_K(2.0)) {
         /* y = k or k + 1/2 (k <= 16): m^k by repeated products (m^16 < 2^8)
          * and one sqrt; error <= (k + 1) / 2 ulp. */
-        int kk = (int)y, i;
+        int kk = (int)y, i, eh = e;
         MDR_T r = mc;
         for (i = 0; i < kk; i++) {
             r *= m;
         }
         if (y != (MDR_T)kk) {
-            if (e & 1) {
-                m *= MDR_K(2.0);
-                e -= 1;
+            MDR_T mh = m;
+            if (eh & 1) { /* sqrt(m 2^e) = sqrt(2m) 2^((e-1)/2) */
+                mh *= MDR_K(2.0);
+                eh -= 1;
             }
-            r *= MDR_SQRT(m);
-            return MDR_SFX(mdr_m_ldexp)(r, ec + kk * e + e / 2);
+            r *= MDR_SQRT(mh);
+            return MDR_SFX(mdr_m_ldexp)(r, ec + kk * e + eh / 2);
         }
         return MDR_SFX(mdr_m_ldexp)(r, ec + kk * e);
     }

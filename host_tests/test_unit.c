@@ -1,0 +1,711 @@
+/*
+ * test_unit.c: unit tests of lib/ that need no reference data: the math
+ * kernels against libm, the literature values as named tests (f32 and f64),
+ * round trips, the non-adhesive limit, every error path.
+ *
+ * Tolerances:
+ *   math kernels vs libm (double): log, exp, sqrt 4 ulp; sincos 4e-16 abs;
+ *     powscaled (|y|+4) ulp; gamma ratio 30 ulp; atanh_m 16 ulp
+ *     float variants: the same counts in float ulp (eps = 2^-24);
+ *   literature values: REL64 = 1e-12 (f64) against closed forms, REL_CV = 1e-11
+ *     against the 12-digit tables of CHECK_VALUES.md, REL32 = 2e-6 (f32), relative;
+ *     depths relative to max(|d|, dl(a));
+ *   round trips: K_I(a, d(a)) = sqrt(2 E* w) to 1e-12 (f64) / 2e-5 (f32:
+ *     g - d cancels up to a factor g/dl = 30 at the largest radius);
+ *     F = 2E*(a d - G) from mdr_profile_eval to 1e-12 / 1e-5 of the scale 2E* a g.
+ */
+#include <float.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "mdr.h"
+
+#define REL64 1e-12 /* expectations from closed forms, evaluated in double */
+#define REL_CV 1e-11 /* expectations from CHECK_VALUES tables (12 digits: +-5e-12) */
+#define REL32 2e-6
+
+/* internal kernels (lib/src/mdr_math_t.h), tested directly */
+double mdr_m_log_f64(double), mdr_m_exp_f64(double), mdr_m_sqrt_f64(double);
+double mdr_m_powscaled_f64(double, double, double), mdr_m_gamma_ratio_half_f64(double);
+double mdr_m_atanh_m_f64(double);
+void mdr_m_sincos_f64(double, double *, double *);
+float mdr_m_log_f32(float), mdr_m_exp_f32(float), mdr_m_sqrt_f32(float);
+float mdr_m_powscaled_f32(float, float, float), mdr_m_gamma_ratio_half_f32(float);
+float mdr_m_atanh_m_f32(float);
+void mdr_m_sincos_f32(float, float *, float *);
+void mdr_m_struve01_f64(double, double *, double *, double *, double *);
+void mdr_m_struve01_f32(float, float *, float *, float *, float *);
+
+static void rel_le(double got, double want, double scale, double tol, const char *what)
+{
+    double s = scale > 0 ? scale : fabs(want);
+    if (!(fabs(got - want) <= tol * s)) {
+        print_error("%s: got %.17g want %.17g rel %.3g > %.3g\n", what, got, want,
+                    fabs(got - want) / s, tol);
+        fail();
+    }
+}
+
+/* ---------------------------------------------------------------- math */
+
+static void math_kernels_f64(void **st)
+{
+    const double u = DBL_EPSILON / 2;
+    (void)st;
+    for (double x = 1e-300; x < 1e300; x *= 1.0173) {
+        rel_le(mdr_m_log_f64(x), log(x), fabs(log(x)) > 1 ? fabs(log(x)) : 1, 4 * u, "log");
+        rel_le(mdr_m_sqrt_f64(x), sqrt(x), 0, 2 * u, "sqrt");
+    }
+    for (double x = -700; x < 700; x += 0.01337) {
+        rel_le(mdr_m_exp_f64(x), exp(x), 0, 4 * u, "exp");
+    }
+    for (double x = -6000; x < 6000; x += 0.0917) {
+        double s, c;
+        mdr_m_sincos_f64(x, &s, &c);
+        rel_le(s, sin(x), 1, 4e-16, "sin");
+        rel_le(c, cos(x), 1, 4e-16, "cos");
+    }
+    for (double x = 1e-12; x < 1e3; x *= 1.37) {
+        for (double y = 0.05; y < 8; y += 0.173) {
+            rel_le(mdr_m_powscaled_f64(2.5, x, y), 2.5 * pow(x, y), 0, (y + 4) * u, "pow");
+        }
+        for (double y = 0.5; y <= 8; y += 0.5) {
+            rel_le(mdr_m_powscaled_f64(0.3, x, y), 0.3 * pow(x, y), 0, (y + 4) * u, "pow k/2");
+        }
+    }
+    for (double m = 0.5001; m < 50; m += 0.0731) {
+        /* reference in long double: lgammal difference */
+        double want = (double)expl(lgammal((long double)m + 0.5L) - lgammal((long double)m));
+        rel_le(mdr_m_gamma_ratio_half_f64(m), want, 0, 30 * u, "gamma ratio");
+    }
+    for (double t = 1e-8; t < 0.9999; t *= 1.05) {
+        /* reference: the series in long double below 0.5 (atanhl(t) - t
+         * itself cancels there), atanhl(t) - t above */
+        long double tl = t, want = 0, term = tl * tl * tl;
+        if (t < 0.5) {
+            for (int k = 1; k < 200; k++, term *= tl * tl) {
+                want += term / (2 * k + 1);
+            }
+        } else {
+            want = atanhl(tl) - tl;
+        }
+        rel_le(mdr_m_atanh_m_f64(t), (double)want, 0, 16 * u, "atanh - t");
+    }
+}
+
+static void math_kernels_f32(void **st)
+{
+    const double u = FLT_EPSILON / 2;
+    (void)st;
+    for (double x = 1e-37; x < 1e37; x *= 1.0173) {
+        float xf = (float)x;
+        rel_le(mdr_m_log_f32(xf), log(xf), fabs(log(xf)) > 1 ? fabs(log(xf)) : 1, 4 * u, "logf");
+        rel_le(mdr_m_sqrt_f32(xf), sqrt(xf), 0, 2 * u, "sqrtf");
+    }
+    for (double x = -80; x < 80; x += 0.01337) {
+        float xf = (float)x;
+        rel_le(mdr_m_exp_f32(xf), exp(xf), 0, 4 * u, "expf");
+    }
+    for (double x = -3000; x < 3000; x += 0.0917) {
+        float s, c, xf = (float)x;
+        mdr_m_sincos_f32(xf, &s, &c);
+        rel_le(s, sin(xf), 1, 4 * u, "sinf");
+        rel_le(c, cos(xf), 1, 4 * u, "cosf");
+    }
+    for (double x = 1e-12; x < 1e3; x *= 1.37) {
+        for (double y = 0.05; y < 8; y += 0.173) {
+            float xf = (float)x, yf = (float)y;
+            double want = 2.5 * pow(xf, yf);
+            if (want > 1e-37 && want < 1e37) {
+                rel_le(mdr_m_powscaled_f32(2.5f, xf, yf), want, 0, (y + 4) * u, "powf");
+            }
+        }
+    }
+    for (double m = 0.5001; m < 50; m += 0.0731) {
+        float mf = (float)m;
+        double want = (double)expl(lgammal((long double)mf + 0.5L) - lgammal((long double)mf));
+        rel_le(mdr_m_gamma_ratio_half_f32(mf), want, 0, 30 * u, "gamma ratio f32");
+    }
+    for (double t = 1e-6; t < 0.9999; t *= 1.05) {
+        float tf = (float)t;
+        double want = (double)(atanhl((long double)tf) - (long double)tf);
+        rel_le(mdr_m_atanh_m_f32(tf), want, 0, 16 * u, "atanh - t f32");
+    }
+}
+
+/* Struve at small z against the power series 4.48 in long double; the
+ * large-z branch is checked against ref/'s integrals in test_gsl.c */
+static void struve_series(void **st)
+{
+    (void)st;
+    for (double z = 1e-4; z < 10; z *= 1.3) {
+        long double s0 = 0, s1 = 0, t = 1;
+        double h0, h1, h0p, zh;
+        for (int k = 0; k < 80; k++) {
+            long double x = powl((long double)z / 2.0L, 2 * k + 1);
+            s0 += t * x / (tgammal(k + 1.5L) * tgammal(k + 1.5L));
+            s1 += t * x * ((long double)z / 2.0L) / (tgammal(k + 1.5L) * tgammal(k + 2.5L));
+            t = -t;
+        }
+        mdr_m_struve01_f64(z, &h0, &h1, &h0p, &zh);
+        rel_le(h0, (double)s0, 0, 1e-13, "H0");
+        rel_le(h1, (double)s1, 0, 1e-13, "H1");
+        rel_le(h0p, 2 / M_PI - (double)s1, 0, 1e-13, "H0'");
+        rel_le(zh, z * (double)s0 - (double)s1, 0, 1e-13, "zH0-H1");
+    }
+    /* f32 at the float argument; the quadrature's error is absolute on the
+     * scale of its integrand (min(z, 1) for H0, min(z^2, z)/5 for H1) */
+    for (double z = 1e-4; z < 12; z *= 1.3) {
+        float zf = (float)z, f0, f1, f0p, fz;
+        long double s0 = 0, s1 = 0, t = 1, zl = (long double)zf;
+        for (int k = 0; k < 80; k++) {
+            long double x = powl(zl / 2.0L, 2 * k + 1);
+            s0 += t * x / (tgammal(k + 1.5L) * tgammal(k + 1.5L));
+            s1 += t * x * (zl / 2.0L) / (tgammal(k + 1.5L) * tgammal(k + 2.5L));
+            t = -t;
+        }
+        mdr_m_struve01_f32(zf, &f0, &f1, &f0p, &fz);
+        rel_le(f0, (double)s0, fmax(fabs((double)s0), fmin(z, 1.0)), 4e-7, "H0 f32");
+        rel_le(f1, (double)s1, fmax(fabs((double)s1), fmin(z * z, z) / 5), 4e-7, "H1 f32");
+    }
+}
+
+/* ---------------------------------------------------------------- helpers */
+
+static mdr_contact_f64 mk64(uint8_t kind, double p0, double p1, double p2, double E, double w)
+{
+    mdr_contact_f64 c;
+    double p[3] = {p0, p1, p2};
+    assert_int_equal(mdr_contact_init_f64(&c, kind, p, E, w), MDR_OK);
+    return c;
+}
+
+static mdr_contact_f32 mk32(uint8_t kind, double p0, double p1, double p2, double E, double w)
+{
+    mdr_contact_f32 c;
+    float p[3] = {(float)p0, (float)p1, (float)p2};
+    assert_int_equal(mdr_contact_init_f32(&c, kind, p, (float)E, (float)w), MDR_OK);
+    return c;
+}
+
+/* critical state in both arithmetics vs expected (a, d, F) */
+static void crit_both(uint8_t kind, double p0, double p1, double p2, double E, double w, uint8_t ctl,
+                      double km, double a, double d, double F, double tol64, const char *what)
+{
+    mdr_contact_f64 c64 = mk64(kind, p0, p1, p2, E, w);
+    mdr_contact_f32 c32 = mk32(kind, p0, p1, p2, E, w);
+    mdr_critstate_f64 o64;
+    mdr_critstate_f32 o32;
+    double s64;
+    float s32;
+    double dl = sqrt(2 * M_PI * a * w / E), ds = fabs(d) > dl ? fabs(d) : dl;
+    assert_int_equal(mdr_default_start_f64(&c64, &s64), MDR_OK);
+    assert_int_equal(mdr_default_start_f32(&c32, &s32), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c64, ctl, km, s64, &o64), MDR_OK);
+    assert_int_equal(mdr_critical_f32(&c32, ctl, (float)km, s32, &o32), MDR_OK);
+    print_message("%-28s f64 rel a %.1e F %.1e d %.1e | f32 rel a %.1e F %.1e d %.1e\n", what,
+                  fabs(o64.a - a) / a, fabs(o64.F - F) / fabs(F), fabs(o64.d - d) / ds,
+                  fabs(o32.a - a) / a, fabs(o32.F - F) / fabs(F), fabs(o32.d - d) / ds);
+    rel_le(o64.a, a, 0, tol64, what);
+    rel_le(o64.F, F, 0, tol64, what);
+    rel_le(o64.d, d, ds, tol64, what);
+    rel_le(o32.a, a, 0, REL32, what);
+    rel_le(o32.F, F, 0, REL32, what);
+    rel_le(o32.d, d, ds, REL32, what);
+}
+
+/* ---------------------------------------------------------------- named */
+
+static void jkr_pull_off_fixed_load(void **st)
+{
+    double R = 10e-6, E = 1e6, w = 0.05;
+    (void)st;
+    /* 4.36: F = -1.5 pi w R; CHECK_VALUES SI example */
+    crit_both(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w, MDR_CONTROL_LOAD, 0, 2.60469853934e-6,
+              -0.226148482694e-6, -1.5 * M_PI * w * R, REL_CV, "JKR fixed load -1.5 pi w R");
+}
+
+static void jkr_pull_off_fixed_grips(void **st)
+{
+    double R = 10e-6, E = 1e6, w = 0.05;
+    (void)st;
+    crit_both(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w, MDR_CONTROL_GRIPS, 0, 1.25220844971e-6,
+              -0.470407800461e-6, -5.0 / 6.0 * M_PI * w * R, REL_CV, "JKR fixed grips -5/6 pi w R");
+}
+
+static void jkr_maugis_units(void **st)
+{
+    /* P = A^3 - A sqrt(6A), Delta = A^2 - (2/3) sqrt(6A) (CHECK_VALUES) */
+    double R = 3.0, E = 7.0, w = 0.2, K = 4 * E / 3;
+    double La = cbrt(M_PI * w * R * R / K), Ld = cbrt(M_PI * M_PI * w * w * R / (K * K)), P = M_PI * w * R;
+    double A = cbrt(1.5);
+    (void)st;
+    crit_both(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w, MDR_CONTROL_LOAD, 0, A * La,
+              -cbrt(1.0 / 12) * Ld, -1.5 * P, REL64, "Maugis A = (3/2)^(1/3)");
+    A = cbrt(1.0 / 6);
+    crit_both(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w, MDR_CONTROL_GRIPS, 0, A * La,
+              -3 * cbrt(1.0 / 36) * Ld, -5.0 / 6 * P, REL64, "Maugis A = (1/6)^(1/3)");
+}
+
+static void kendall_flat_punch(void **st)
+{
+    (void)st;
+    crit_both(MDR_PROFILE_FLATPUNCH, 1, 0, 0, 1, 1, MDR_CONTROL_LOAD, 0, 1, -sqrt(2 * M_PI),
+              -sqrt(8 * M_PI), REL64, "Kendall 4.63 (load)");
+    crit_both(MDR_PROFILE_FLATPUNCH, 1, 0, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 1, -sqrt(2 * M_PI),
+              -sqrt(8 * M_PI), REL64, "Kendall 4.63 (grips)");
+}
+
+static void cone_4_59(void **st)
+{
+    (void)st;
+    crit_both(MDR_PROFILE_CONE, M_PI / 4, 0, 0, 1, 1, MDR_CONTROL_LOAD, 0, 18 / M_PI, 3.0,
+              -54 / M_PI, REL64, "cone 4.59 fixed load");
+    crit_both(MDR_PROFILE_CONE, M_PI / 4, 0, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 0.636619772368, -1.0,
+              -1.9098593171, REL_CV, "cone fixed grips");
+}
+
+static void yao_gao_4_71(void **st)
+{
+    (void)st;
+    crit_both(MDR_PROFILE_POWERLAW, 1, 1, 0, 1, 1, MDR_CONTROL_LOAD, 0, 5.72957795131, 3.0,
+              -17.1887338539, REL_CV, "power law n=1 (= cone)");
+    crit_both(MDR_PROFILE_POWERLAW, 1, 2, 0, 1, 1, MDR_CONTROL_LOAD, 0, 0.959579146339,
+              -0.613861425392, -2.35619449019, REL_CV, "power law n=2 load");
+    crit_both(MDR_PROFILE_POWERLAW, 1, 2, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 0.461317537161,
+              -1.27688322055, -1.308996939, REL_CV, "power law n=2 grips");
+    crit_both(MDR_PROFILE_POWERLAW, 1, 4, 0, 1, 1, MDR_CONTROL_LOAD, 0, 0.742360731996,
+              -1.34982493713, -2.2446077436, REL_CV, "power law n=4 load");
+    crit_both(MDR_PROFILE_POWERLAW, 1, 4, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 0.542368717867,
+              -1.6152706565, -1.8022058228, REL_CV, "power law n=4 grips");
+    {
+        /* n = 1.5: d_c = 0 exactly (4.72) */
+        double n = 1.5, kap = sqrt(M_PI) * tgamma(n / 2 + 1) / tgamma((n + 1) / 2);
+        double ac = pow(9 * M_PI / (2 * n * n * kap * kap), 1 / (2 * n - 1));
+        double Fc = (1 - 2 * n) / (n + 1) * pow(pow(3 / (2 * n * kap), 3) * pow(2 * M_PI, n + 1), 1 / (2 * n - 1));
+        crit_both(MDR_PROFILE_POWERLAW, 1, 1.5, 0, 1, 1, MDR_CONTROL_LOAD, 0, ac, 0.0, Fc, REL64, "power law n=1.5, d_c = 0");
+    }
+}
+
+static void exact_sphere_maugis(void **st)
+{
+    (void)st;
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 0.001, MDR_CONTROL_LOAD, 0, 0.150772526847,
+              -0.00787175800775, -0.00466912367872, REL_CV, "sphere w=0.001 load");
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 0.001, MDR_CONTROL_GRIPS, 0, 0.073055569743,
+              -0.016078149575, -0.00260941223493, REL_CV, "sphere w=0.001 grips");
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 0.01, MDR_CONTROL_LOAD, 0, 0.31333953176,
+              -0.0387143374578, -0.0451915917825, REL_CV, "sphere w=0.01 load");
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 0.01, MDR_CONTROL_GRIPS, 0, 0.156046427229,
+              -0.0744675402607, -0.025786459052, REL_CV, "sphere w=0.01 grips");
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 0.05, MDR_CONTROL_LOAD, 0, 0.494294810525,
+              -0.12629179808, -0.209776616592, REL_CV, "sphere w=0.05 load");
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 0.05, MDR_CONTROL_GRIPS, 0, 0.261387739157,
+              -0.216614639899, -0.125314425266, REL_CV, "sphere w=0.05 grips");
+}
+
+/* Fig. 4.10: for m = E* R/(pi w) > 1000 the exact sphere's pull-off force is
+ * within 1 % of the paraboloid's -1.5 pi w R; for m = 1 it is far from it */
+static void sphere_vs_paraboloid_fig_4_10(void **st)
+{
+    (void)st;
+    for (int big = 0; big < 2; big++) {
+        double m = big ? 3000.0 : 1.0, R = 1, E = 1, w = E * R / (M_PI * m);
+        mdr_contact_f64 c = mk64(MDR_PROFILE_SPHERE, R, 0, 0, E, w);
+        mdr_critstate_f64 o;
+        double a0, dev;
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &o), MDR_OK);
+        dev = fabs(o.F / (-1.5 * M_PI * w * R) - 1);
+        print_message("m = %g: sphere pull-off / paraboloid = %.6f\n", m, o.F / (-1.5 * M_PI * w * R));
+        if (big) {
+            assert_true(dev < 0.01);
+        } else {
+            assert_true(dev > 0.1);
+        }
+    }
+}
+
+/* 4.80-4.86: above b = 0.747526 a* the fixed-load retraction has no
+ * interior instability (dF/da > 0 on (b, inf)) and separates at a = b */
+static void flat_tip_threshold(void **st)
+{
+    double R = 1, E = 1, w = 1, astar = cbrt(9 * M_PI * R * R * w / (8 * E));
+    (void)st;
+    for (int above = 0; above < 2; above++) {
+        double b = (above ? 0.7480 : 0.7470) * astar;
+        mdr_contact_f64 c = mk64(MDR_PROFILE_FLATTIP, R, b, 0, E, w);
+        mdr_contact_f32 cf = mk32(MDR_PROFILE_FLATTIP, R, b, 0, E, w);
+        mdr_critstate_f64 o;
+        mdr_critstate_f32 of;
+        double a0, minslope = INFINITY;
+        float a0f;
+        for (double a = b * 1.0001; a < 3 * astar; a *= 1.0002) {
+            mdr_eqstate_f64 e;
+            assert_int_equal(mdr_eq_f64(&c, a, &e), MDR_OK);
+            minslope = fmin(minslope, e.dF_da);
+        }
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &o), MDR_OK);
+        assert_int_equal(mdr_default_start_f32(&cf, &a0f), MDR_OK);
+        assert_int_equal(mdr_critical_f32(&cf, MDR_CONTROL_LOAD, 0, a0f, &of), MDR_OK);
+        rel_le(o.a, b, 0, 1e-12, "separation at a = b");
+        rel_le(of.a, b, 0, REL32, "separation at a = b (f32)");
+        assert_int_equal(o.jumps, above ? 0 : 1);
+        assert_int_equal(of.jumps, above ? 0 : 1);
+        if (above) {
+            assert_true(minslope > 0);
+        } else {
+            assert_true(minslope < 0);
+        }
+    }
+}
+
+/* Seed 4.54 / Fig. 4.9: the wavy profile's pull-off force under fixed load
+ * is 18.6 % above the smooth paraboloid's (h/lambda = 0.03) after a series of
+ * jumps, 2.8 % for h/lambda = 0.005; fixed grips reach a lower depth */
+static void guduru_wavy_fig_4_9(void **st)
+{
+    double R = 1, lam = 0.05, E = 1, w = 0.05 / (2 * M_PI), F0 = -1.5 * M_PI * w * R;
+    (void)st;
+    for (int big = 0; big < 2; big++) {
+        double h = (big ? 0.03 : 0.005) * lam;
+        mdr_contact_f64 c = mk64(MDR_PROFILE_WAVY, R, h, lam, E, w);
+        mdr_contact_f64 c0 = mk64(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w);
+        mdr_critstate_f64 o, og, o0g;
+        double a0, a00, inc;
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        assert_int_equal(mdr_default_start_f64(&c0, &a00), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &o), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_GRIPS, 0, a0, &og), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c0, MDR_CONTROL_GRIPS, 0, a00, &o0g), MDR_OK);
+        inc = o.F / F0 - 1;
+        print_message("h/lambda = %.3f: pull-off +%.2f %% after %u jumps; grips d_c %.4g vs smooth %.4g\n",
+                      h / lam, 100 * inc, o.jumps, og.d, o0g.d);
+        if (big) {
+            assert_true(inc > 0.184 && inc < 0.188);
+            assert_true(o.jumps >= 10);
+            assert_true(og.d < o0g.d);
+        } else {
+            assert_true(inc > 0.026 && inc < 0.030);
+        }
+        /* fixed grips separates at a lower depth than fixed load */
+        assert_true(og.d < o.d);
+    }
+}
+
+/* ---------------------------------------------------------------- limits */
+
+static void no_adhesion_is_exact(void **st)
+{
+    (void)st;
+    for (uint8_t k = MDR_PROFILE_PARABOLOID; k <= MDR_PROFILE_WAVY; k++) {
+        /* wavy: h = lambda^2/(10 R), monotonic by 4.45 (alpha = 10 > 8.576);
+         * beyond that limit even the non-adhesive F_na of MDR can be negative */
+        mdr_contact_f64 c = mk64(k, k == MDR_PROFILE_CONE ? 0.4 : 1.0,
+                                 k == MDR_PROFILE_POWERLAW ? 2.5 : (k == MDR_PROFILE_WAVY ? 0.00025 : 0.2),
+                                 0.05, 3.0, 0.0);
+        mdr_critstate_f64 o;
+        double a0;
+        for (double a = 0.01; a < 0.9; a *= 1.5) {
+            mdr_eqstate_f64 e;
+            double g, G;
+            assert_int_equal(mdr_eq_f64(&c, a, &e), MDR_OK);
+            assert_int_equal(mdr_profile_eval_f64(&c, a, &g, NULL, &G), MDR_OK);
+            assert_true(e.dl == 0.0);
+            assert_true(e.d == g);
+            assert_true(e.K_I == 0.0);
+            rel_le(e.F, 2 * 3.0 * (a * g - G), 2 * 3.0 * a * g + 1e-300, 1e-14, "F = F_na");
+            assert_true(e.F >= 0.0);
+        }
+        /* no pull-off: the contact peels stably to a = 0; the flat punch and
+         * the flat of the flattened tip hold their radius at zero force */
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &o), MDR_OK);
+        assert_true(o.F == 0.0);
+        assert_true(o.a == (k == MDR_PROFILE_FLATPUNCH ? 1.0 : (k == MDR_PROFILE_FLATTIP ? 0.2 : 0.0)));
+    }
+}
+
+/* 4.77 keeps no digit in float at a/R = 1e-4; lib must, via the series */
+static void sphere_small_radius_no_cancellation(void **st)
+{
+    double R = 1e-3, E = 1e6, w = 0.01;
+    mdr_contact_f32 c = mk32(MDR_PROFILE_SPHERE, R, 0, 0, E, w);
+    mdr_contact_f64 c64 = mk64(MDR_PROFILE_SPHERE, R, 0, 0, E, w);
+    (void)st;
+    for (double t = 1e-6; t < 1e-2; t *= 1.7) {
+        double a = (double)(float)(t * R);
+        mdr_eqstate_f32 e;
+        mdr_eqstate_f64 e64;
+        /* series: F_na = (4/3) E a^3/R (1 + 2/5 t^2 + 9/35 t^4) */
+        double tt = a / R, Fna = 4.0 / 3 * E * a * a * a / R * (1 + 0.4 * tt * tt + 9.0 / 35 * tt * tt * tt * tt);
+        double F = Fna - sqrt(8 * M_PI * a * a * a * E * w);
+        double g = a * a / R * (1 + tt * tt / 3 + tt * tt * tt * tt / 5);
+        float gf;
+        assert_int_equal(mdr_eq_f32(&c, (float)a, &e), MDR_OK);
+        assert_int_equal(mdr_eq_f64(&c64, a, &e64), MDR_OK);
+        assert_int_equal(mdr_profile_eval_f32(&c, (float)a, &gf, NULL, NULL), MDR_OK);
+        rel_le(e.F, F, Fna + fabs(F), REL32, "sphere F at small a/R (f32)");
+        rel_le(gf, g, 0, REL32, "sphere g at small a/R (f32)");
+        rel_le(e64.F, F, Fna + fabs(F), 1e-14, "sphere F at small a/R (f64)");
+    }
+}
+
+static void round_trips(void **st)
+{
+    (void)st;
+    for (uint8_t k = MDR_PROFILE_PARABOLOID; k <= MDR_PROFILE_WAVY; k++) {
+        double E = 2e6, w = 0.07, p0 = k == MDR_PROFILE_CONE ? 0.3 : 1e-5;
+        double p1 = k == MDR_PROFILE_POWERLAW ? 2.5 : (k == MDR_PROFILE_FLATTIP ? 2e-6 : 1e-8);
+        double p2 = 2e-6;
+        mdr_contact_f64 c = mk64(k, k == MDR_PROFILE_POWERLAW ? 1e5 : p0, p1, p2, E, w);
+        mdr_contact_f32 cf = mk32(k, k == MDR_PROFILE_POWERLAW ? 1e5 : p0, p1, p2, E, w);
+        double kic = sqrt(2 * E * w);
+        for (double a = 3e-6; a < 9e-6; a *= 1.13) {
+            mdr_eqstate_f64 e;
+            mdr_eqstate_f32 ef;
+            double K, G, g, Gi;
+            float Kf, gf, Gif;
+            if (k == MDR_PROFILE_FLATPUNCH && a > p0) {
+                break;
+            }
+            assert_int_equal(mdr_eq_f64(&c, a, &e), MDR_OK);
+            assert_int_equal(mdr_eq_f32(&cf, (float)a, &ef), MDR_OK);
+            /* K_I of the state (a, d(a)) is the critical value sqrt(2E*w); G = w */
+            assert_int_equal(mdr_stress_intensity_f64(&c, a, e.d, &K, &G), MDR_OK);
+            rel_le(K, kic, 0, 1e-9, "K_I = sqrt(2 E* w)");
+            rel_le(G, w, 0, 1e-9, "G = w");
+            rel_le(e.K_I, kic, 0, 1e-14, "eq K_I");
+            assert_int_equal(mdr_stress_intensity_f32(&cf, (float)a, ef.d, &Kf, NULL), MDR_OK);
+            rel_le(Kf, kic, 0, 2e-5, "K_I f32");
+            /* F = 2E*(a d - G) from the profile's G */
+            assert_int_equal(mdr_profile_eval_f64(&c, a, &g, NULL, &Gi), MDR_OK);
+            rel_le(e.F, 2 * E * (a * e.d - Gi), 2 * E * a * (g + e.dl), 1e-12, "F = 2E(a d - G)");
+            assert_int_equal(mdr_profile_eval_f32(&cf, (float)a, &gf, NULL, &Gif), MDR_OK);
+            rel_le(ef.F, 2 * E * ((double)(float)a * ef.d - Gif), 2 * E * a * (gf + ef.dl), 1e-5,
+                   "F = 2E(a d - G) f32");
+            /* stability flags agree with the slopes */
+            assert_int_equal(e.stable_load, e.dF_da > 0);
+            assert_int_equal(e.stable_grips, e.dd_da > 0);
+        }
+    }
+}
+
+/* stress of the paraboloid, 4.42: sigma/p = -1.5 sqrt(1-s^2) + 0.5 (1 - F/F_na)/sqrt(1-s^2) */
+static void stress_paraboloid_4_42(void **st)
+{
+    double R = 2e-6, E = 3e6, w = 0.04, a = 7e-7;
+    mdr_contact_f64 c = mk64(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w);
+    mdr_contact_f32 cf = mk32(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w);
+    mdr_eqstate_f64 e;
+    (void)st;
+    assert_int_equal(mdr_eq_f64(&c, a, &e), MDR_OK);
+    for (double s = 0; s < 0.999; s += 0.0371) {
+        double Fna = 4 * E * a * a * a / (3 * R), pbar = Fna / (M_PI * a * a), sig;
+        double want = pbar * (-1.5 * sqrt(1 - s * s) + 0.5 * (1 - e.F / Fna) / sqrt(1 - s * s));
+        float sf;
+        assert_int_equal(mdr_stress_f64(&c, a, s * a, &sig), MDR_OK);
+        rel_le(sig, want, pbar / sqrt(1 - s * s), 1e-13, "4.42");
+        assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)(s * a), &sf), MDR_OK);
+        rel_le(sf, want, pbar / sqrt(1 - s * s), 2e-6, "4.42 f32");
+    }
+}
+
+/* the machine mode interpolates between fixed load (k_m -> 0) and fixed
+ * grips (k_m -> inf) */
+static void machine_limits(void **st)
+{
+    double R = 1, E = 1, w = 1;
+    mdr_contact_f64 c = mk64(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w);
+    mdr_critstate_f64 ol, og, os, oh, om;
+    double a0;
+    (void)st;
+    assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &ol), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_GRIPS, 0, a0, &og), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, 1e-7, a0, &os), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, 1e7, a0, &oh), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, 2.0, a0, &om), MDR_OK);
+    rel_le(os.F, ol.F, 0, 1e-6, "soft machine = fixed load");
+    rel_le(oh.F, og.F, 0, 1e-6, "stiff machine = fixed grips");
+    assert_true(om.F < og.F && om.F > ol.F);
+}
+
+/* ---------------------------------------------------------------- errors */
+
+#define GUARD 0x5Au
+
+static int untouched(const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++) {
+        if (b[i] != GUARD) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static void init_errors(void **st)
+{
+    mdr_contact_f32 c;
+    mdr_contact_f64 c64;
+    float good[3] = {1.0f, 0.5f, 0.1f};
+    (void)st;
+    memset(&c, GUARD, sizeof c);
+    memset(&c64, GUARD, sizeof c64);
+    assert_int_equal(mdr_contact_init_f32(NULL, MDR_PROFILE_PARABOLOID, good, 1, 1), MDR_E_NULL);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, NULL, 1, 1), MDR_E_NULL);
+    assert_int_equal(mdr_contact_init_f32(&c, 0, good, 1, 1), MDR_E_KIND);
+    assert_int_equal(mdr_contact_init_f32(&c, 99, good, 1, 1), MDR_E_KIND);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, good, NAN, 1), MDR_E_NONFINITE);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, good, INFINITY, 1), MDR_E_NONFINITE);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, good, 1, NAN), MDR_E_NONFINITE);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, good, 0, 1), MDR_E_PARAM);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, good, -1, 1), MDR_E_PARAM);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, good, 1, -1e-9f), MDR_E_PARAM);
+    {
+        /* per kind: a bad value in each used parameter slot */
+        static const struct {
+            uint8_t kind;
+            float p[3];
+            mdr_status want;
+        } bad[] = {
+            {MDR_PROFILE_PARABOLOID, {0, 0, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_PARABOLOID, {-1, 0, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_PARABOLOID, {NAN, 0, 0}, MDR_E_NONFINITE},
+            {MDR_PROFILE_CONE, {0, 0, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_CONE, {1.5708f, 0, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_CONE, {INFINITY, 0, 0}, MDR_E_NONFINITE},
+            {MDR_PROFILE_POWERLAW, {0, 2, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_POWERLAW, {1, 0, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_POWERLAW, {1, -1, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_POWERLAW, {1, MDR_POWERLAW_N_MAX + 1, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_POWERLAW, {1, NAN, 0}, MDR_E_NONFINITE},
+            {MDR_PROFILE_FLATPUNCH, {0, 0, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_SPHERE, {-2, 0, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_FLATTIP, {1, -0.1f, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_FLATTIP, {0, 0.1f, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_WAVY, {1, -0.1f, 0.1f}, MDR_E_PARAM},
+            {MDR_PROFILE_WAVY, {1, 0.1f, 0}, MDR_E_PARAM},
+            {MDR_PROFILE_WAVY, {1, 0.1f, -INFINITY}, MDR_E_NONFINITE},
+        };
+        for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+            double p64[3] = {bad[i].p[0], bad[i].p[1], bad[i].p[2]};
+            assert_int_equal(mdr_contact_init_f32(&c, bad[i].kind, bad[i].p, 1, 1), bad[i].want);
+            assert_int_equal(mdr_contact_init_f64(&c64, bad[i].kind, p64, 1, 1), bad[i].want);
+        }
+    }
+    assert_true(untouched(&c, sizeof c));
+    assert_true(untouched(&c64, sizeof c64));
+    /* unused parameter slots may hold anything, even NaN */
+    {
+        float p[3] = {1.0f, NAN, INFINITY};
+        assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, p, 1, 1), MDR_OK);
+    }
+    assert_string_equal(mdr_status_str(MDR_E_RADIUS), "contact radius outside the profile's domain");
+    assert_string_equal(mdr_status_str(42), "unknown status");
+}
+
+static void call_errors(void **st)
+{
+    mdr_contact_f32 c = mk32(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 1);
+    mdr_contact_f32 cone = mk32(MDR_PROFILE_CONE, 0.5, 0, 0, 1, 1);
+    mdr_contact_f32 pw = mk32(MDR_PROFILE_POWERLAW, 1, 0.8, 0, 1, 1);
+    mdr_contact_f32 ft = mk32(MDR_PROFILE_FLATTIP, 1, 0.25, 0, 1, 1);
+    mdr_contact_f32 fp = mk32(MDR_PROFILE_FLATPUNCH, 1, 0, 0, 1, 1);
+    mdr_eqstate_f32 e;
+    mdr_critstate_f32 o;
+    float v = 0, g;
+    (void)st;
+    memset(&e, GUARD, sizeof e);
+    memset(&o, GUARD, sizeof o);
+    /* eq */
+    assert_int_equal(mdr_eq_f32(NULL, 0.5f, &e), MDR_E_NULL);
+    assert_int_equal(mdr_eq_f32(&c, 0.5f, NULL), MDR_E_NULL);
+    assert_int_equal(mdr_eq_f32(&c, NAN, &e), MDR_E_NONFINITE);
+    assert_int_equal(mdr_eq_f32(&c, INFINITY, &e), MDR_E_NONFINITE);
+    assert_int_equal(mdr_eq_f32(&c, 0.0f, &e), MDR_E_RADIUS);
+    assert_int_equal(mdr_eq_f32(&c, -0.1f, &e), MDR_E_RADIUS);
+    assert_int_equal(mdr_eq_f32(&c, 1.0f, &e), MDR_E_RADIUS);  /* a >= R */
+    assert_int_equal(mdr_eq_f32(&fp, 1.01f, &e), MDR_E_RADIUS); /* a > a0 */
+    assert_int_equal(mdr_eq_f32(&ft, 0.25f, &e), MDR_E_OVERFLOW); /* g' = inf at a = b */
+    assert_true(untouched(&e, sizeof e));
+    /* profile */
+    assert_int_equal(mdr_profile_eval_f32(NULL, 0.5f, &g, NULL, NULL), MDR_E_NULL);
+    assert_int_equal(mdr_profile_eval_f32(&c, 1.5f, &g, NULL, NULL), MDR_E_RADIUS);
+    assert_int_equal(mdr_profile_eval_f32(&c, NAN, &g, NULL, NULL), MDR_E_NONFINITE);
+    /* K_I */
+    assert_int_equal(mdr_stress_intensity_f32(&c, 0.5f, NAN, &v, NULL), MDR_E_NONFINITE);
+    assert_int_equal(mdr_stress_intensity_f32(&c, 0.5f, 0, NULL, NULL), MDR_E_NULL);
+    assert_int_equal(mdr_stress_intensity_f32(&c, 2.0f, 0, &v, NULL), MDR_E_RADIUS);
+    /* stress */
+    v = 123.0f;
+    assert_int_equal(mdr_stress_f32(&c, 0.5f, -0.1f, &v), MDR_E_POSITION);
+    assert_int_equal(mdr_stress_f32(&c, 0.5f, 0.5f, &v), MDR_E_POSITION);
+    assert_int_equal(mdr_stress_f32(&c, 0.5f, NAN, &v), MDR_E_NONFINITE);
+    assert_int_equal(mdr_stress_f32(&c, 0.5f, 0.1f, NULL), MDR_E_NULL);
+    assert_int_equal(mdr_stress_f32(&cone, 0.5f, 0.0f, &v), MDR_E_SINGULAR);
+    assert_int_equal(mdr_stress_f32(&pw, 0.5f, 0.0f, &v), MDR_E_SINGULAR);
+    assert_int_equal(mdr_stress_at_f32(&ft, 0.5f, 0.0f, 0.25f, &v), MDR_E_SINGULAR);
+    assert_int_equal(mdr_stress_at_f32(&ft, 0.5f, NAN, 0.1f, &v), MDR_E_NONFINITE);
+    assert_true(v == 123.0f);
+    /* critical */
+    assert_int_equal(mdr_critical_f32(NULL, MDR_CONTROL_LOAD, 0, 0.5f, &o), MDR_E_NULL);
+    assert_int_equal(mdr_critical_f32(&c, MDR_CONTROL_LOAD, 0, 0.5f, NULL), MDR_E_NULL);
+    assert_int_equal(mdr_critical_f32(&c, 0, 0, 0.5f, &o), MDR_E_CONTROL);
+    assert_int_equal(mdr_critical_f32(&c, 7, 0, 0.5f, &o), MDR_E_CONTROL);
+    assert_int_equal(mdr_critical_f32(&c, MDR_CONTROL_MACHINE, 0, 0.5f, &o), MDR_E_CONTROL);
+    assert_int_equal(mdr_critical_f32(&c, MDR_CONTROL_MACHINE, -1, 0.5f, &o), MDR_E_CONTROL);
+    assert_int_equal(mdr_critical_f32(&c, MDR_CONTROL_MACHINE, NAN, 0.5f, &o), MDR_E_NONFINITE);
+    assert_int_equal(mdr_critical_f32(&c, MDR_CONTROL_LOAD, 0, 1.5f, &o), MDR_E_RADIUS);
+    assert_int_equal(mdr_critical_f32(&c, MDR_CONTROL_LOAD, 0, NAN, &o), MDR_E_NONFINITE);
+    assert_true(untouched(&o, sizeof o));
+    assert_int_equal(mdr_default_start_f32(NULL, &v), MDR_E_NULL);
+    assert_int_equal(mdr_default_start_f32(&c, NULL), MDR_E_NULL);
+}
+
+/* results that would overflow float give MDR_E_OVERFLOW, never inf/NaN */
+static void overflow_is_reported(void **st)
+{
+    mdr_contact_f32 c = mk32(MDR_PROFILE_POWERLAW, 1e30, 8, 0, 1e30, 1);
+    mdr_eqstate_f32 e;
+    (void)st;
+    memset(&e, GUARD, sizeof e);
+    assert_int_equal(mdr_eq_f32(&c, 1e3f, &e), MDR_E_OVERFLOW);
+    assert_true(untouched(&e, sizeof e));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(math_kernels_f64),
+        cmocka_unit_test(math_kernels_f32),
+        cmocka_unit_test(struve_series),
+        cmocka_unit_test(jkr_pull_off_fixed_load),
+        cmocka_unit_test(jkr_pull_off_fixed_grips),
+        cmocka_unit_test(jkr_maugis_units),
+        cmocka_unit_test(kendall_flat_punch),
+        cmocka_unit_test(cone_4_59),
+        cmocka_unit_test(yao_gao_4_71),
+        cmocka_unit_test(exact_sphere_maugis),
+        cmocka_unit_test(sphere_vs_paraboloid_fig_4_10),
+        cmocka_unit_test(flat_tip_threshold),
+        cmocka_unit_test(guduru_wavy_fig_4_9),
+        cmocka_unit_test(no_adhesion_is_exact),
+        cmocka_unit_test(sphere_small_radius_no_cancellation),
+        cmocka_unit_test(round_trips),
+        cmocka_unit_test(stress_paraboloid_4_42),
+        cmocka_unit_test(machine_limits),
+        cmocka_unit_test(init_errors),
+        cmocka_unit_test(call_errors),
+        cmocka_unit_test(overflow_is_reported),
+    };
+    return cmocka_run_group_tests_name("unit", tests, NULL, NULL);
+}

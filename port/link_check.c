@@ -1,0 +1,59 @@
+/*
+ * port/link_check.c: a freestanding program that calls every public f32
+ * function, linked with -nostdlib -lgcc to prove lib/ needs nothing else.
+ * The only library functions it may need are on the allow-list (a firmware's
+ * C library provides them; GCC may emit calls to them for struct copies):
+ * memcpy, memset. They are defined here so the link is complete.
+ */
+#include <stddef.h>
+
+#include "mdr.h"
+
+void *memcpy(void *dst, const void *src, size_t n);
+void *memset(void *dst, int v, size_t n);
+void link_check_entry(void);
+
+void *memcpy(void *dst, const void *src, size_t n)
+{
+    unsigned char *d = dst;
+    const unsigned char *s = src;
+    while (n--) {
+        *d++ = *s++;
+    }
+    return dst;
+}
+
+void *memset(void *dst, int v, size_t n)
+{
+    unsigned char *d = dst;
+    while (n--) {
+        *d++ = (unsigned char)v;
+    }
+    return dst;
+}
+
+volatile float mdr_link_sink;
+
+void link_check_entry(void)
+{
+    static const float p[3] = {1e-6f, 0.0f, 0.0f};
+    mdr_contact_f32 c;
+    mdr_eqstate_f32 e;
+    mdr_critstate_f32 o;
+    float a0 = 0.0f, g = 0.0f, dg = 0.0f, G = 0.0f, k = 0.0f, s = 0.0f;
+    uint8_t kind;
+    for (kind = MDR_PROFILE_PARABOLOID; kind <= MDR_PROFILE_WAVY; kind++) {
+        if (mdr_contact_init_f32(&c, kind, p, 1e9f, 0.1f) != MDR_OK) {
+            continue;
+        }
+        (void)mdr_profile_eval_f32(&c, 1e-7f, &g, &dg, &G);
+        (void)mdr_eq_f32(&c, 1e-7f, &e);
+        (void)mdr_stress_intensity_f32(&c, 1e-7f, 0.0f, &k, NULL);
+        (void)mdr_stress_f32(&c, 1e-7f, 0.0f, &s);
+        (void)mdr_stress_at_f32(&c, 1e-7f, 0.0f, 0.0f, &s);
+        (void)mdr_default_start_f32(&c, &a0);
+        (void)mdr_critical_f32(&c, MDR_CONTROL_LOAD, 1.0f, a0, &o);
+        mdr_link_sink = e.F + o.F + g + dg + G + k + s;
+    }
+    (void)mdr_status_str(MDR_OK);
+}
