@@ -27,11 +27,32 @@ static gsl_integration_workspace *ws_for(int level)
     return ws[level];
 }
 
+/* Diagnostics: quadratures that GSL reports as failed with an error estimate
+ * above REF_ACCEPT relative. Printed by the tests, not asserted: such
+ * quadratures are inner parts of a sum (the phi integral of g' next to the
+ * flattened tip's point term) whose absolute error estimates (1e-15) do not
+ * reach the results, which test_ref.c proves against the closed forms. */
+#define REF_ACCEPT 1e-10
+static int failures;
+
+static void note_status(int st, double err, double r)
+{
+    if (st != GSL_SUCCESS && !(err <= REF_ACCEPT * fabs(r))) {
+        failures++;
+    }
+}
+
+int ref_failures(void)
+{
+    return failures;
+}
+
 static double qaws(gsl_function *F, double a, double b, double alpha, double beta, int level)
 {
     double r = 0.0, err;
     gsl_integration_qaws_table *t = gsl_integration_qaws_table_alloc(alpha, beta, 0, 0);
-    gsl_integration_qaws(F, a, b, t, 0.0, REF_EPSREL, REF_LIMIT, ws_for(level), &r, &err);
+    int st = gsl_integration_qaws(F, a, b, t, 0.0, REF_EPSREL, REF_LIMIT, ws_for(level), &r, &err);
+    note_status(st, err, r);
     gsl_integration_qaws_table_free(t);
     return r;
 }
@@ -39,8 +60,9 @@ static double qaws(gsl_function *F, double a, double b, double alpha, double bet
 static double qag(gsl_function *F, double a, double b, int level)
 {
     double r = 0.0, err;
-    gsl_integration_qag(F, a, b, 0.0, REF_EPSREL, REF_LIMIT, GSL_INTEG_GAUSS61, ws_for(level), &r,
-                        &err);
+    int st = gsl_integration_qag(F, a, b, 0.0, REF_EPSREL, REF_LIMIT, GSL_INTEG_GAUSS61, ws_for(level),
+                                 &r, &err);
+    note_status(st, err, r);
     return r;
 }
 
@@ -169,7 +191,7 @@ static double ref_dg_level(const ref_scene *s, double x, int level)
             return 0.0;
         }
         /* jump of f' by b/R at r = b: x sin(phi_b) (b/R) / (x cos(phi_b)) */
-        return qag(&F, asin(b / x), M_PI / 2, level) + b * b / (s->p[0] * sqrt(x * x - b * b));
+        return qag(&F, asin(b / x), M_PI / 2, level) + b * b / (s->p[0] * sqrt((x - b) * (x + b)));
     }
     return qag(&F, 0.0, M_PI / 2, level);
 }
@@ -227,11 +249,25 @@ static double s_integrand(double x, void *v)
     return ref_dg_level(c->s, x, 1) / sqrt(x + c->r);
 }
 
+static double s_integrand_center(double x, void *v)
+{
+    const struct sctx *c = v;
+    return ref_dg_level(c->s, x, 1) / x;
+}
+
 static double s_integrand_flat(double x, void *v)
 {
-    /* flattened tip, r < b: weight (x-b)^(-1/2), integrand g'(x) sqrt(x-b)/sqrt(x^2-r^2) */
+    /* flattened tip, r < b: weight (x-b)^(-1/2), integrand g'(x) sqrt(x-b)/sqrt(x^2-r^2),
+     * with g' sqrt(x-b) = (regular part) sqrt(x-b) + b^2/(R sqrt(x+b)) so that
+     * the end point x = b (where Clenshaw-Curtis evaluates) has its limit */
     const struct sctx *c = v;
-    return ref_dg_level(c->s, x, 1) * sqrt(x - c->b) / sqrt(x * x - c->r * c->r);
+    double b = c->b, reg = 0.0;
+    if (x > b) {
+        struct gctx gc = {c->s, x};
+        gsl_function F = {dg_integrand, &gc};
+        reg = qag(&F, asin(b / x), M_PI / 2, 1) * sqrt(x - b);
+    }
+    return (reg + b * b / (c->s->p[0] * sqrt(x + b))) / sqrt(x * x - c->r * c->r);
 }
 
 double ref_stress(const ref_scene *s, double a, double r)
@@ -245,6 +281,12 @@ double ref_stress(const ref_scene *s, double a, double r)
         c.b = s->p[1];
         F.function = s_integrand_flat;
         S = qaws(&F, s->p[1], a, -0.5, 0.0, 0);
+    } else if (r == 0.0) {
+        /* int_0^a g'(x)/x dx: QAGS (interior nodes only; x = 0 is 0/0) */
+        double err;
+        F.function = s_integrand_center;
+        int st = gsl_integration_qags(&F, 0.0, a, 0.0, REF_EPSREL, REF_LIMIT, ws_for(0), &S, &err);
+        note_status(st, err, S);
     } else {
         S = qaws(&F, r, a, -0.5, 0.0, 0);
     }

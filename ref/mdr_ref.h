@@ -42,5 +42,8 @@ double ref_stress(const ref_scene *s, double a, double r);
 int ref_critical(const ref_scene *s, int control, double k_m, double a_start, ref_crit *out);
 double ref_struve_h0(double z);
 double ref_struve_h1(double z);
+/* number of quadratures GSL reported as failed with an error estimate above
+ * 1e-10 relative since start (diagnostics; see mdr_ref.c) */
+int ref_failures(void);
 
 #endif /* MDR_REF_H */

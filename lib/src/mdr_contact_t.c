@@ -321,28 +321,51 @@ mdr_status MDR_SFX(mdr_stress_intensity)(const MDR_SFX(mdr_contact) *c, MDR_T a,
  *   s in [0, sqrt(a^2 - b^2)], x = sqrt(b^2 + s^2),
  *   integrand (2x^2 - b^2)/(R x sqrt(s^2 + b^2 - r^2))
  * (from x^2 = b^2 + s^2, which removes the 1/sqrt(x - b) of g').
- * Error of the rule: measured against ref/ (host_tests/test_contact_ref.c),
- * below 1e-12 relative in f64 except within 1e-3 a of a singular point.
+ * The wavy profile's g' oscillates with period lambda: the u range is cut
+ * into panels of at most lambda/4 (at most 512; beyond a = 128 lambda the
+ * accuracy degrades), each integrated by the same rule.
+ * Error of the rule: measured against ref/ (host_tests/test_gsl.c), see the
+ * README; not guaranteed within 1e-3 a of a singular point (r -> b).
  */
 static MDR_T MDR_SFX(mdr_c_stress_integrand)(const MDR_SFX(mdr_contact) *c, MDR_T r, MDR_T u,
                                              bool flat_s)
 {
     MDR_T g, dg, hb;
     if (flat_s) {
-        MDR_T b = c->k[1], x = MDR_SQRT(b * b + u * u);
+        MDR_T b = c->k[1], x = MDR_SQRT(b * b + u * u); /* u = 0 is regular here */
         return (MDR_K(2.0) * x * x - b * b) /
                (c->k[0] * x * MDR_SQRT(u * u + (b - r) * (b + r)));
     }
+    if (u == MDR_K(0.0)) {
+        return MDR_K(0.0); /* a node that underflowed onto the end point: weight < 1e-22 */
+    }
     MDR_SFX(mdr_c_profile)(c, r + u, &g, &dg, &hb);
-    return dg / MDR_SQRT(u * (MDR_K(2.0) * r + u));
+    /* sqrt(u) sqrt(2r + u), not sqrt(u (2r + u)): the product underflows in
+     * float for nodes within 1e-30 of the end point */
+    return dg / (MDR_SQRT(u) * MDR_SQRT(MDR_K(2.0) * r + u));
 }
+
+/* tanh-sinh over u in [u0, u0 + U] of the stress integrand */
+static MDR_T MDR_SFX(mdr_c_de)(const MDR_SFX(mdr_contact) *c, MDR_T r, MDR_T u0, MDR_T U, bool flat_s)
+{
+    static const MDR_T de[MDR_DE_N][2] = {MDR_DE_TABLE};
+    MDR_T half = MDR_K(0.5) * U, sum;
+    int j;
+    sum = de[0][1] * MDR_SFX(mdr_c_stress_integrand)(c, r, u0 + half, flat_s);
+    for (j = 1; j < MDR_DE_N; j++) {
+        MDR_T off = half * de[j][0];
+        sum += de[j][1] * (MDR_SFX(mdr_c_stress_integrand)(c, r, u0 + off, flat_s) +
+                           MDR_SFX(mdr_c_stress_integrand)(c, r, u0 + (U - off), flat_s));
+    }
+    return half * sum;
+}
+
+#define MDR_ABEL_PANELS_MAX 512
 
 static MDR_T MDR_SFX(mdr_c_abel)(const MDR_SFX(mdr_contact) *c, MDR_T r, MDR_T a)
 {
-    static const MDR_T de[MDR_DE_N][2] = {MDR_DE_TABLE};
-    bool flat_s = false;
-    MDR_T U, half, sum;
-    int j;
+    MDR_T U, sum;
+    int np = 1, i;
     switch (c->kind) {
     case MDR_PROFILE_PARABOLOID:
         return MDR_K(2.0) / c->k[0] * MDR_SQRT((a - r) * (a + r));
@@ -353,19 +376,22 @@ static MDR_T MDR_SFX(mdr_c_abel)(const MDR_SFX(mdr_contact) *c, MDR_T r, MDR_T a
     default:
         break;
     }
-    U = a - r;
     if (c->kind == MDR_PROFILE_FLATTIP && r < c->k[1]) {
-        flat_s = true;
-        U = MDR_SQRT((a - c->k[1]) * (a + c->k[1]));
+        return MDR_SFX(mdr_c_de)(c, r, MDR_K(0.0), MDR_SQRT((a - c->k[1]) * (a + c->k[1])), true);
     }
-    half = MDR_K(0.5) * U;
-    sum = de[0][1] * MDR_SFX(mdr_c_stress_integrand)(c, r, half, flat_s);
-    for (j = 1; j < MDR_DE_N; j++) {
-        MDR_T off = half * de[j][0];
-        sum += de[j][1] * (MDR_SFX(mdr_c_stress_integrand)(c, r, off, flat_s) +
-                           MDR_SFX(mdr_c_stress_integrand)(c, r, U - off, flat_s));
+    U = a - r;
+    if (c->kind == MDR_PROFILE_WAVY && c->p[1] > MDR_K(0.0)) {
+        /* g' oscillates with period lambda: panels of at most lambda/4 */
+        MDR_T q = U / (c->p[2] * MDR_K(0.25));
+        np = q >= (MDR_T)MDR_ABEL_PANELS_MAX ? MDR_ABEL_PANELS_MAX : (int)q + 1;
     }
-    return half * sum;
+    /* panel 0 holds the 1/sqrt end point; the others are regular */
+    sum = MDR_K(0.0);
+    for (i = 0; i < np; i++) {
+        MDR_T u0 = U * (MDR_T)i / (MDR_T)np, u1 = U * (MDR_T)(i + 1) / (MDR_T)np;
+        sum += MDR_SFX(mdr_c_de)(c, r, u0, u1 - u0, false);
+    }
+    return sum;
 }
 
 mdr_status MDR_SFX(mdr_stress_at)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T d, MDR_T r,

@@ -1,0 +1,166 @@
+/*
+ * test_gsl.c: lib/ against ref/ called directly (GSL at run time), for what
+ * the committed vectors do not hold: the normal stress sigma(r) (4.27) of
+ * every profile over whole radial profiles, G(a), and the Struve functions
+ * over the whole argument range (both branches of mdr_m_struve01).
+ *
+ * Tolerances:
+ *   sigma: |sigma - sigma_ref| <= TOL_S * S, S = E* (g(a) + dl)/(pi sqrt(a^2-r^2))
+ *          + E*|S_ref|/pi (the size of the two terms of 4.27), TOL_S = 1e-10
+ *          (f64), 2e-6 (f32)
+ *   G:     relative 1e-10 (f64), 2e-6 (f32)
+ *   Struve: |H - H_ref| <= 1e-12 (f64), 3e-7 (f32) times max(|H|, scale),
+ *          scale = min(z, 1) for H0, min(z^2, 1)/5 for H1 (the quadrature's
+ *          error is absolute on the scale of its integrand); f32 at the float z.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <cmocka.h>
+
+#include "mdr.h"
+#include "mdr_ref.h"
+
+#define TOL_S64 1e-10
+#define TOL_S32 2e-6
+#define TOL_G64 1e-10
+#define TOL_G32 2e-6
+
+void mdr_m_struve01_f64(double, double *, double *, double *, double *);
+void mdr_m_struve01_f32(float, float *, float *, float *, float *);
+
+static void within(double got, double want, double scale, double tol, const char *what, double x)
+{
+    if (!(fabs(got - want) <= tol * scale)) {
+        print_error("%s at %.6g: got %.17g want %.17g (rel to scale %.3g > %.3g)\n", what, x, got,
+                    want, fabs(got - want) / scale, tol);
+        fail();
+    }
+}
+
+static const ref_scene scenes[] = {
+    {MDR_PROFILE_PARABOLOID, {2e-8, 0, 0}, 1e9, 0.1},
+    {MDR_PROFILE_CONE, {0.6, 0, 0}, 2e6, 0.05},
+    {MDR_PROFILE_POWERLAW, {3e3, 1.5, 0}, 1e7, 0.2},
+    {MDR_PROFILE_POWERLAW, {2e7, 3.0, 0}, 1e7, 0.2},
+    {MDR_PROFILE_POWERLAW, {0.7, 0.75, 0}, 1e7, 0.2},
+    {MDR_PROFILE_FLATPUNCH, {1e-6, 0, 0}, 1e6, 0.05},
+    {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.5},
+    {MDR_PROFILE_FLATTIP, {1e-6, 2e-7, 0}, 1e6, 0.05},
+    {MDR_PROFILE_WAVY, {1.0, 0.0015, 0.05}, 1.0, 0.05 / (2 * M_PI)},
+};
+
+static double worst[2];
+
+static void stress_vs_ref(void **st)
+{
+    (void)st;
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        const ref_scene *s = &scenes[i];
+        mdr_contact_f64 c;
+        mdr_contact_f32 cf;
+        double a, a0;
+        float pf[3] = {(float)s->p[0], (float)s->p[1], (float)s->p[2]};
+        assert_int_equal(mdr_contact_init_f64(&c, (uint8_t)s->kind, s->p, s->E, s->w), MDR_OK);
+        assert_int_equal(mdr_contact_init_f32(&cf, (uint8_t)s->kind, pf, (float)s->E, (float)s->w), MDR_OK);
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        a = s->kind == MDR_PROFILE_FLATPUNCH ? s->p[0] : 0.4 * a0;
+        if (s->kind == MDR_PROFILE_FLATTIP && a < 1.3 * s->p[1]) {
+            a = 1.3 * s->p[1];
+        }
+        a = (double)(float)a; /* the same radius in both arithmetics */
+        for (double q = 0.0; q < 0.995; q += 0.0433) {
+            double r = (double)(float)(q * a), sig, want, Sref, g, dl, scale;
+            float sf;
+            if ((s->kind == MDR_PROFILE_CONE || (s->kind == MDR_PROFILE_POWERLAW && s->p[1] <= 1)) && r == 0) {
+                continue; /* singular at the tip: MDR_E_SINGULAR, tested in test_unit */
+            }
+            if (s->kind == MDR_PROFILE_FLATTIP && fabs(r - s->p[1]) < 1e-3 * a) {
+                continue; /* log singularity at the rim r = b */
+            }
+            want = ref_stress(s, a, r);
+            assert_int_equal(mdr_stress_f64(&c, a, r, &sig), MDR_OK);
+            assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)r, &sf), MDR_OK);
+            g = ref_g(s, a);
+            dl = sqrt(2 * M_PI * a * s->w / s->E);
+            Sref = dl / sqrt(a * a - r * r) - want * M_PI / s->E;
+            scale = s->E / M_PI * ((g + dl) / sqrt(a * a - r * r) + fabs(Sref));
+            worst[1] = fmax(worst[1], fabs(sig - want) / scale);
+            worst[0] = fmax(worst[0], fabs(sf - want) / scale);
+            within(sig, want, scale, TOL_S64, "sigma f64", r / a);
+            within(sf, want, scale, TOL_S32, "sigma f32", r / a);
+        }
+    }
+    print_message("sigma: largest error relative to the 4.27 term scale: f32 %.2e, f64 %.2e\n", worst[0],
+                  worst[1]);
+}
+
+static void G_vs_ref(void **st)
+{
+    (void)st;
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        const ref_scene *s = &scenes[i];
+        mdr_contact_f64 c;
+        mdr_contact_f32 cf;
+        double a0;
+        float pf[3] = {(float)s->p[0], (float)s->p[1], (float)s->p[2]};
+        if (s->kind == MDR_PROFILE_FLATPUNCH) {
+            continue;
+        }
+        assert_int_equal(mdr_contact_init_f64(&c, (uint8_t)s->kind, s->p, s->E, s->w), MDR_OK);
+        assert_int_equal(mdr_contact_init_f32(&cf, (uint8_t)s->kind, pf, (float)s->E, (float)s->w), MDR_OK);
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        for (double q = 0.01; q < 1.0; q *= 1.9) {
+            double a = (double)(float)(q * a0), G, want;
+            float Gf;
+            if (s->kind == MDR_PROFILE_FLATTIP && a <= s->p[1] * 1.001) {
+                continue;
+            }
+            want = ref_G(s, a);
+            assert_int_equal(mdr_profile_eval_f64(&c, a, NULL, NULL, &G), MDR_OK);
+            assert_int_equal(mdr_profile_eval_f32(&cf, (float)a, NULL, NULL, &Gf), MDR_OK);
+            within(G, want, fabs(want), TOL_G64, "G f64", a);
+            within(Gf, want, fabs(want), TOL_G32, "G f32", a);
+        }
+    }
+}
+
+static void struve_vs_ref(void **st)
+{
+    (void)st;
+    for (double z = 1e-3; z < 3000; z *= 1.21) {
+        double h0, h1, h0p, zh, r0 = ref_struve_h0(z), r1 = ref_struve_h1(z);
+        float zf = (float)z, f0, f1, f0p, fz;
+        double rf0 = ref_struve_h0(zf), rf1 = ref_struve_h1(zf);
+        mdr_m_struve01_f64(z, &h0, &h1, &h0p, &zh);
+        mdr_m_struve01_f32(zf, &f0, &f1, &f0p, &fz);
+        within(h0, r0, fmax(fabs(r0), fmin(z, 1.0)), 1e-12, "H0 f64", z);
+        within(h1, r1, fmax(fabs(r1), fmin(z * z, 1.0) / 5), 1e-12, "H1 f64", z);
+        /* the reference 2/pi - H1 carries the absolute error of H1 */
+        within(h0p, 2 / M_PI - r1, fmax(fabs(2 / M_PI - r1), fabs(r1)), 1e-12, "H0' f64", z);
+        within(zh, z * r0 - r1, fmax(fabs(z * r0 - r1), fmin(z * z, z) / 5), 1e-12, "zH0-H1 f64", z);
+        within(f0, rf0, fmax(fabs(rf0), fmin(z, 1.0)), 3e-7, "H0 f32", z);
+        within(f1, rf1, fmax(fabs(rf1), fmin(z * z, 1.0) / 5), 3e-7, "H1 f32", z);
+    }
+}
+
+/* diagnostics of the reference's quadratures (see ref/mdr_ref.c) */
+static void ref_diagnostics(void **st)
+{
+    (void)st;
+    print_message("ref: %d inner quadratures above 1e-10 estimated error\n", ref_failures());
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(struve_vs_ref),
+        cmocka_unit_test(G_vs_ref),
+        cmocka_unit_test(stress_vs_ref),
+        cmocka_unit_test(ref_diagnostics),
+    };
+    return cmocka_run_group_tests_name("lib_vs_gsl", tests, NULL, NULL);
+}
