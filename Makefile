@@ -44,10 +44,10 @@ $(B)/host/libmdr.a: $(B)/host/mdr_f32.o $(B)/host/mdr_f64.o $(B)/host/mdr_status
 	$(CROSS_COMPILE)ar rcs $@ $^
 
 $(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h $(B)/host/libmdr.a
-	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -o $@
+	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
 
 $(B)/host/afm_demo: examples/afm_demo.c $(B)/host/libmdr.a
-	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -o $@
+	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
 
 # ---- tests ------------------------------------------------------------------
 # Each test binary is built twice: plain, and with address+undefined sanitizers

@@ -9,7 +9,10 @@
  *          + E*|S_ref|/pi (the size of the two terms of 4.27), TOL_S = 1e-10
  *          (f64), 2e-6 (f32)
  *   G:     relative 1e-10 (f64), 2e-6 (f32)
- *   Struve: |H - H_ref| <= 1e-12 (f64), 3e-7 (f32) times max(|H|, scale),
+ *   Struve: |H - H_ref| <= 1e-10 (f64: the accuracy ref/ is proved to; its
+ *          adaptive quadrature of sin(z cos t) over up to 500 oscillations is
+ *          not better, and test_unit.c checks lib to 1e-13 against the series
+ *          where that is computable), 3e-7 (f32) times max(|H|, scale),
  *          scale = min(z, 1) for H0, min(z^2, 1)/5 for H1 (the quadrature's
  *          error is absolute on the scale of its integrand); f32 at the float z.
  */
@@ -28,6 +31,7 @@
 #define TOL_S32 2e-6
 #define TOL_G64 1e-10
 #define TOL_G32 2e-6
+#define TOL_H64 1e-10
 
 void mdr_m_struve01_f64(double, double *, double *, double *, double *);
 void mdr_m_struve01_f32(float, float *, float *, float *, float *);
@@ -137,11 +141,11 @@ static void struve_vs_ref(void **st)
         double rf0 = ref_struve_h0(zf), rf1 = ref_struve_h1(zf);
         mdr_m_struve01_f64(z, &h0, &h1, &h0p, &zh);
         mdr_m_struve01_f32(zf, &f0, &f1, &f0p, &fz);
-        within(h0, r0, fmax(fabs(r0), fmin(z, 1.0)), 1e-12, "H0 f64", z);
-        within(h1, r1, fmax(fabs(r1), fmin(z * z, 1.0) / 5), 1e-12, "H1 f64", z);
+        within(h0, r0, fmax(fabs(r0), fmin(z, 1.0)), TOL_H64, "H0 f64", z);
+        within(h1, r1, fmax(fabs(r1), fmin(z * z, 1.0) / 5), TOL_H64, "H1 f64", z);
         /* the reference 2/pi - H1 carries the absolute error of H1 */
-        within(h0p, 2 / M_PI - r1, fmax(fabs(2 / M_PI - r1), fabs(r1)), 1e-12, "H0' f64", z);
-        within(zh, z * r0 - r1, fmax(fabs(z * r0 - r1), fmin(z * z, z) / 5), 1e-12, "zH0-H1 f64", z);
+        within(h0p, 2 / M_PI - r1, fmax(fabs(2 / M_PI - r1), fabs(r1)), TOL_H64, "H0' f64", z);
+        within(zh, z * r0 - r1, fmax(fabs(z * r0 - r1), fmin(z * z, z) / 5), TOL_H64, "zH0-H1 f64", z);
         within(f0, rf0, fmax(fabs(rf0), fmin(z, 1.0)), 3e-7, "H0 f32", z);
         within(f1, rf1, fmax(fabs(rf1), fmin(z * z, 1.0) / 5), 3e-7, "H1 f32", z);
     }

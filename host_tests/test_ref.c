@@ -154,7 +154,7 @@ static void wavy(void **st)
     double R = 1, lam = 0.05, h = 0.03 * lam, E = 1, w = 0.05 / (2 * M_PI);
     ref_scene s = {MDR_PROFILE_WAVY, {R, h, lam}, E, w};
     (void)st;
-    for (double a = 0.01; a < 1.0; a *= 1.37) {
+    for (double a = 0.01; a < 3.0; a *= 1.37) { /* a/lambda up to 60 */
         ref_eq e;
         double z = 2 * M_PI * a / lam, H0 = ref_struve_h0(z), H1 = ref_struve_h1(z);
         ref_eq_at(&s, a, &e);

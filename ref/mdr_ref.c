@@ -125,6 +125,12 @@ static double g_integrand(double r, void *v)
     return fp(c->s, r) / sqrt(c->x + r);
 }
 
+static double g_integrand_regular(double r, void *v)
+{
+    const struct gctx *c = v; /* away from r = x: f'(r)/sqrt(x^2 - r^2) */
+    return fp(c->s, r) / sqrt((c->x - r) * (c->x + r));
+}
+
 static double g_integrand_pow(double r, void *v)
 {
     const struct gctx *c = v; /* f' = nC r^(n-1): r^(n-1) is the QAWS weight */
@@ -148,6 +154,18 @@ static double ref_g_level(const ref_scene *s, double x, int level)
     if (s->kind == MDR_PROFILE_POWERLAW) {
         F.function = g_integrand_pow;
         alpha = s->p[1] - 1;
+    }
+    if (s->kind == MDR_PROFILE_WAVY && x > 2 * s->p[2]) {
+        /* many oscillations of f': one panel per wavelength, the last one
+         * (with the 1/sqrt(x - r) end point) by QAWS */
+        gsl_function Fr = {g_integrand_regular, &c};
+        double lam = s->p[2], sum = 0.0, r0 = 0.0, end = x - lam;
+        while (r0 < end) {
+            double r1 = r0 + lam < end ? r0 + lam : end;
+            sum += qag(&Fr, r0, r1, level);
+            r0 = r1;
+        }
+        return x * (sum + qaws(&F, end, x, 0.0, -0.5, level));
     }
     return x * qaws(&F, lo, x, alpha, -0.5, level);
 }
@@ -220,6 +238,16 @@ double ref_G(const ref_scene *s, double a)
             return 0.0;
         }
         lo = s->p[1];
+    }
+    if (s->kind == MDR_PROFILE_WAVY) {
+        /* one panel per wavelength of the oscillating g */
+        double sum = 0.0, x0 = 0.0;
+        while (x0 < a) {
+            double x1 = x0 + s->p[2] < a ? x0 + s->p[2] : a;
+            sum += qag(&F, x0, x1, 0);
+            x0 = x1;
+        }
+        return sum;
     }
     return qag(&F, lo, a, 0);
 }
@@ -416,9 +444,10 @@ int ref_critical(const ref_scene *s, int control, double k_m, double a_start, re
                 continue;
             }
             a = brent(c_slope, &c, an, a);
-            /* stay on the stable side of a kink (flattened tip at a = b) */
-            if (!(c_slope(a, &c) > 0) && s->kind == MDR_PROFILE_FLATTIP && a < s->p[1] * (1 + 1e-12)) {
-                a = s->p[1] * (1 + 1e-15);
+            /* Brent converged onto the kink of the flattened tip at a = b,
+             * where g ~ sqrt(a - b): take the limit state a = b itself */
+            if (s->kind == MDR_PROFILE_FLATTIP && fabs(a - s->p[1]) <= 1e-12 * s->p[1]) {
+                a = s->p[1];
             }
         }
         {
