@@ -127,7 +127,7 @@ CFG_rv32imac := $(RV)gcc -march=rv32imac -mabi=ilp32 -Iport/riscv
 CROSS_CFGS := m4f m0 rv32imafc rv32imac
 # undefined symbols allowed in lib/ objects: the two mem* functions GCC may
 # call, and libgcc helpers (checked separately for double precision)
-ALLOW_RE := ^(memcpy|memset|__aeabi_[a-z0-9]+|__[a-z]+sf[0-9]|__float(un)?sisf|__fix(uns)?sfsi|__[a-z]+[sd]i[0-9]|__clz[sd]i2)$$
+ALLOW_RE := ^(memcpy|memset|__aeabi_[a-z0-9]+|__gnu_thumb1_case_[a-z0-9]+|__[a-z]+sf[0-9]|__float(un)?sisf|__fix(uns)?sfsi|__[a-z]+[sd]i[0-9]|__clz[sd]i2)$$
 DOUBLE_RE := ^(__aeabi_(d[a-z0-9]+|[a-z0-9]*2d[a-z]*)|__[a-z]+df[0-9]?|__[a-z]+df[a-z0-9]*)$$
 
 define cross_rules

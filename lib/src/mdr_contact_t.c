@@ -491,13 +491,41 @@ static MDR_T MDR_SFX(mdr_c_step)(const MDR_SFX(mdr_contact) *c, MDR_T a)
     return a - h;
 }
 
+/* Bisection of [lo, hi] to machine precision (at most MDR_CRIT_BISECT
+ * halvings, then MDR_E_NOCONV). level = false: keeps hi on the stable side
+ * (dc/da > 0), the end of a stable branch; level = true: keeps lo with
+ * c(lo) < cstar, the landing radius of a jump at constant control. */
+static mdr_status MDR_SFX(mdr_c_bisect)(const MDR_SFX(mdr_contact) *c, uint8_t control, MDR_T km,
+                                        bool level, MDR_T cstar, MDR_T *lo, MDR_T *hi)
+{
+    int it;
+    for (it = 0; it < MDR_CRIT_BISECT; it++) {
+        MDR_T mid = MDR_K(0.5) * (*lo + *hi), vm, dvm;
+        MDR_SFX(mdr_eqstate) em;
+        mdr_status st;
+        if (!(mid > *lo && mid < *hi)) {
+            return MDR_OK;
+        }
+        st = MDR_SFX(mdr_c_ctrl)(c, control, km, mid, &vm, &dvm, &em);
+        if (st != MDR_OK) {
+            return st;
+        }
+        if (level ? !(vm < cstar) : (dvm > MDR_K(0.0))) {
+            *hi = mid;
+        } else {
+            *lo = mid;
+        }
+    }
+    return MDR_E_NOCONV;
+}
+
 mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control, MDR_T k_m, MDR_T a_start,
                                  MDR_SFX(mdr_critstate) *out)
 {
     MDR_SFX(mdr_eqstate) e, estar;
     MDR_T a, v, dv, amin, vstar = MDR_K(0.0);
     mdr_status st;
-    int steps = 0, it;
+    int steps = 0;
     uint16_t jumps = 0;
     bool unstable_here;
     if (c == NULL || out == NULL) {
@@ -547,39 +575,21 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
             }
             if (dvn > MDR_K(0.0)) {
                 a = an;
-                e = en;
                 continue;
             }
             /* bisection: hi stable (dc/da > 0), lo not */
             {
                 MDR_T lo = an, hi = a;
-                for (it = 0; it < MDR_CRIT_BISECT; it++) {
-                    MDR_T mid = MDR_K(0.5) * (lo + hi), vm, dvm;
-                    MDR_SFX(mdr_eqstate) em;
-                    if (!(mid > lo && mid < hi)) {
-                        break;
-                    }
-                    st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, mid, &vm, &dvm, &em);
-                    if (st != MDR_OK) {
-                        return st;
-                    }
-                    if (dvm > MDR_K(0.0)) {
-                        hi = mid;
-                        e = em;
-                    } else {
-                        lo = mid;
-                    }
-                }
-                if (it == MDR_CRIT_BISECT) {
-                    return MDR_E_NOCONV;
+                st = MDR_SFX(mdr_c_bisect)(c, control, k_m, false, MDR_K(0.0), &lo, &hi);
+                if (st != MDR_OK) {
+                    return st;
                 }
                 a = hi;
             }
         }
         /* a: end of a stable branch (or an unstable start). Jump at constant
          * control to the largest a' < a with c(a') = c(a), if any. */
-        estar = e;
-        st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &vstar, &dv, &e);
+        st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &vstar, &dv, &estar);
         if (st != MDR_OK) {
             return st;
         }
@@ -618,24 +628,9 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
              * separates instead of landing where it stands) */
             {
                 MDR_T lo = an, hi = ap;
-                for (it = 0; it < MDR_CRIT_BISECT; it++) {
-                    MDR_T mid = MDR_K(0.5) * (lo + hi), vm, dvm;
-                    MDR_SFX(mdr_eqstate) em;
-                    if (!(mid > lo && mid < hi)) {
-                        break;
-                    }
-                    st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, mid, &vm, &dvm, &em);
-                    if (st != MDR_OK) {
-                        return st;
-                    }
-                    if (vm < vstar) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                if (it == MDR_CRIT_BISECT) {
-                    return MDR_E_NOCONV;
+                st = MDR_SFX(mdr_c_bisect)(c, control, k_m, true, vstar, &lo, &hi);
+                if (st != MDR_OK) {
+                    return st;
                 }
                 a = lo;
             }
