@@ -33,8 +33,8 @@
 #define TOL_G32 2e-6
 #define TOL_H64 1e-10
 
-void mdr_m_struve01_f64(double, double *, double *, double *, double *);
-void mdr_m_struve01_f32(float, float *, float *, float *, float *);
+void mdr_m_struve01_f64(double, double, double *, double *, double *, double *);
+void mdr_m_struve01_f32(float, float, float *, float *, float *, float *);
 
 static void within(double got, double want, double scale, double tol, const char *what, double x)
 {
@@ -139,8 +139,8 @@ static void struve_vs_ref(void **st)
         double h0, h1, h0p, zh, r0 = ref_struve_h0(z), r1 = ref_struve_h1(z);
         float zf = (float)z, f0, f1, f0p, fz;
         double rf0 = ref_struve_h0(zf), rf1 = ref_struve_h1(zf);
-        mdr_m_struve01_f64(z, &h0, &h1, &h0p, &zh);
-        mdr_m_struve01_f32(zf, &f0, &f1, &f0p, &fz);
+        mdr_m_struve01_f64(z, 0.0, &h0, &h1, &h0p, &zh);
+        mdr_m_struve01_f32(zf, 0.0f, &f0, &f1, &f0p, &fz);
         within(h0, r0, fmax(fabs(r0), fmin(z, 1.0)), TOL_H64, "H0 f64", z);
         within(h1, r1, fmax(fabs(r1), fmin(z * z, 1.0) / 5), TOL_H64, "H1 f64", z);
         /* the reference 2/pi - H1 carries the absolute error of H1 */

@@ -38,8 +38,8 @@ float mdr_m_log_f32(float), mdr_m_exp_f32(float), mdr_m_sqrt_f32(float);
 float mdr_m_powscaled_f32(float, float, float), mdr_m_gamma_ratio_half_f32(float);
 float mdr_m_atanh_m_f32(float);
 void mdr_m_sincos_f32(float, float *, float *);
-void mdr_m_struve01_f64(double, double *, double *, double *, double *);
-void mdr_m_struve01_f32(float, float *, float *, float *, float *);
+void mdr_m_struve01_f64(double, double, double *, double *, double *, double *);
+void mdr_m_struve01_f32(float, float, float *, float *, float *, float *);
 
 static void rel_le(double got, double want, double scale, double tol, const char *what)
 {
@@ -152,7 +152,7 @@ static void struve_series(void **st)
             s1 += t * x * ((long double)z / 2.0L) / (tgammal(k + 1.5L) * tgammal(k + 2.5L));
             t = -t;
         }
-        mdr_m_struve01_f64(z, &h0, &h1, &h0p, &zh);
+        mdr_m_struve01_f64(z, 0.0, &h0, &h1, &h0p, &zh);
         rel_le(h0, (double)s0, 0, 1e-13, "H0");
         rel_le(h1, (double)s1, 0, 1e-13, "H1");
         rel_le(h0p, 2 / M_PI - (double)s1, 0, 1e-13, "H0'");
@@ -169,7 +169,7 @@ static void struve_series(void **st)
             s1 += t * x * (zl / 2.0L) / (tgammal(k + 1.5L) * tgammal(k + 2.5L));
             t = -t;
         }
-        mdr_m_struve01_f32(zf, &f0, &f1, &f0p, &fz);
+        mdr_m_struve01_f32(zf, 0.0f, &f0, &f1, &f0p, &fz);
         rel_le(f0, (double)s0, fmax(fabs((double)s0), fmin(z, 1.0)), 4e-7, "H0 f32");
         rel_le(f1, (double)s1, fmax(fabs((double)s1), fmin(z * z, z) / 5), 4e-7, "H1 f32");
     }

@@ -74,9 +74,10 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         break;
     }
     case MDR_PROFILE_WAVY: {
-        MDR_T h0, h1, h0p, zh;
-        MDR_T t = x / c->p[0], z = k[1] * x;
-        MDR_SFX(mdr_m_struve01)(z, &h0, &h1, &h0p, &zh);
+        MDR_T h0, h1, h0p, zh, z, zl;
+        MDR_T t = x / c->p[0];
+        MDR_SFX(mdr_m_phase)(x, c->p[2], &z, &zl); /* z = 2 pi x/lambda, exact to eps^2 */
+        MDR_SFX(mdr_m_struve01)(z, zl, &h0, &h1, &h0p, &zh);
         *g = x * t + k[0] * x * h0;                      /* 4.47 */
         *dg = MDR_K(2.0) * t + k[0] * (h0 + z * h0p);    /* d/dx [x H0(kx)] */
         *hbar = MDR_K(2.0) / MDR_K(3.0) * x * t + k[2] * zh; /* 4.51 / (2E* a) */

@@ -25,6 +25,8 @@
 #define MDR_GL_N MDR_GL32_N
 #define MDR_GL_TABLE MDR_GL32_TABLE
 #define MDR_SPLIT MDR_K(4097.0)   /* 2^12 + 1, Veltkamp split */
+#define MDR_2PI_HI MDR_K(6.28318548202514648)      /* fl(2 pi) */
+#define MDR_2PI_LO MDR_K(-1.7484555314695172e-7)  /* 2 pi - fl(2 pi) */
 #define MDR_GAMMA_M MDR_K(6.0)  /* Stirling remainder 1/(1188 x^9) < 1e-10 at x >= 6 */
 #else
 #define MDR_LOG_TERMS 12    /* |s|^25/25 < 2^-57 */
@@ -41,6 +43,8 @@
 #define MDR_GL_N MDR_GL64_N
 #define MDR_GL_TABLE MDR_GL64_TABLE
 #define MDR_SPLIT MDR_K(134217729.0) /* 2^27 + 1, Veltkamp split */
+#define MDR_2PI_HI MDR_K(6.283185307179586232)     /* fl(2 pi) */
+#define MDR_2PI_LO MDR_K(2.4492935982947064e-16)   /* 2 pi - fl(2 pi) */
 #define MDR_GAMMA_M MDR_K(20.0) /* Stirling remainder < 2e-15 at x >= 20 */
 #endif
 
@@ -313,6 +317,31 @@ void MDR_SFX(mdr_m_sincos)(MDR_T x, MDR_T *s, MDR_T *c)
     }
 }
 
+/* Rounding error of p = fl(x y): x y - p exactly, by Veltkamp splitting
+ * (Dekker 1971), valid without FMA and without overflow for |x|,|y| < 1e15
+ * in f32 (< 1e150 in f64). */
+static MDR_T MDR_SFX(mdr_m_two_prod_err)(MDR_T x, MDR_T y, MDR_T p)
+{
+    MDR_T tx = MDR_SPLIT * x, ty = MDR_SPLIT * y;
+    MDR_T xh = tx - (tx - x), xl = x - xh;
+    MDR_T yh = ty - (ty - y), yl = y - yh;
+    return ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+}
+
+/* z = 2 pi x / lambda as an unevaluated sum zh + zl with |zl| <= ulp(zh)
+ * and error ~ eps^2 z: compensated division (the residual x - q lambda is
+ * exact by two-product and Sterbenz) and two-product with 2 pi = hi + lo.
+ * A phase formed in plain arithmetic is off by ~3 eps z, which at z = 70
+ * moves an oscillating term by 1e-5 of its amplitude in f32. */
+void MDR_SFX(mdr_m_phase)(MDR_T x, MDR_T lambda, MDR_T *zh, MDR_T *zl)
+{
+    MDR_T qh = x / lambda, p = qh * lambda;
+    MDR_T ql = ((x - p) - MDR_SFX(mdr_m_two_prod_err)(qh, lambda, p)) / lambda;
+    MDR_T h = MDR_2PI_HI * qh;
+    *zl = MDR_SFX(mdr_m_two_prod_err)(MDR_2PI_HI, qh, h) + (MDR_2PI_HI * ql + MDR_2PI_LO * qh);
+    *zh = h;
+}
+
 /* log(1+u) - u for |u| <= 1/40: alternating series -u^2/2 + u^3/3 - ...
  * (ratio <= 1/40; 12 terms leave < 1e-21). */
 static MDR_T MDR_SFX(mdr_m_log1pm)(MDR_T u)
@@ -355,7 +384,9 @@ MDR_T MDR_SFX(mdr_m_gamma_ratio_half)(MDR_T m)
 }
 
 /*
- * Struve functions H0(z), H1(z) and z*H0(z) - H1(z) for z >= 0.
+ * Struve functions H0(z), H1(z), H0'(z) and z*H0(z) - H1(z) for z >= 0, the
+ * argument given as z + zl (zl: the low part of an exactly formed phase, or
+ * 0; it enters the phases only, amplitudes use z).
  *
  * z <= ZMAX (18 in f32, 40 in f64): Gauss-Legendre quadrature (32 nodes in
  *   f32, 64 in f64) of
@@ -426,18 +457,7 @@ static MDR_T MDR_SFX(mdr_m_struve_k)(int nu, MDR_T z)
     return sum;
 }
 
-/* Rounding error of p = fl(x y): x y - p exactly, by Veltkamp splitting
- * (Dekker 1971), valid without FMA and without overflow for |x|,|y| < 1e15
- * in f32 (< 1e150 in f64). */
-static MDR_T MDR_SFX(mdr_m_two_prod_err)(MDR_T x, MDR_T y, MDR_T p)
-{
-    MDR_T tx = MDR_SPLIT * x, ty = MDR_SPLIT * y;
-    MDR_T xh = tx - (tx - x), xl = x - xh;
-    MDR_T yh = ty - (ty - y), yl = y - yh;
-    return ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
-}
-
-void MDR_SFX(mdr_m_struve01)(MDR_T z, MDR_T *h0, MDR_T *h1, MDR_T *h0p, MDR_T *zh0_h1)
+void MDR_SFX(mdr_m_struve01)(MDR_T z, MDR_T zl, MDR_T *h0, MDR_T *h1, MDR_T *h0p, MDR_T *zh0_h1)
 {
     if (z <= MDR_STRUVE_ZMAX) {
         static const MDR_T gl[MDR_GL_N][4] = {MDR_GL_TABLE};
@@ -453,7 +473,7 @@ void MDR_SFX(mdr_m_struve01)(MDR_T z, MDR_T *h0, MDR_T *h1, MDR_T *h0p, MDR_T *z
              * sin(p + e) = sin p + e cos p to first order: the rounding of
              * the argument (up to 1 ulp of z) no longer reaches the result */
             p = z * gl[i][0];
-            e = MDR_SFX(mdr_m_two_prod_err)(z, gl[i][0], p) + z * gl[i][3];
+            e = MDR_SFX(mdr_m_two_prod_err)(z, gl[i][0], p) + (z * gl[i][3] + zl * gl[i][0]);
             MDR_SFX(mdr_m_sincos)(p, &sv, &cv);
             {
                 MDR_T s0v = sv;
@@ -483,6 +503,11 @@ void MDR_SFX(mdr_m_struve01)(MDR_T z, MDR_T *h0, MDR_T *h1, MDR_T *h0p, MDR_T *z
          * sin chi0 = (s - c)/sqrt2, cos chi0 = (c + s)/sqrt2,
          * sin chi1 = -(s + c)/sqrt2, cos chi1 = (s - c)/sqrt2. */
         MDR_SFX(mdr_m_sincos)(z, &sv, &cv);
+        {
+            MDR_T s0v = sv; /* sin(z + zl), cos(z + zl) to first order in zl */
+            sv += zl * cv;
+            cv -= zl * s0v;
+        }
         amp = MDR_SQRT(MDR_K(1.0) / (MDR_PI * z)); /* sqrt(2/(pi z)) / sqrt2 */
         y0 = amp * (p0 * (sv - cv) + q0 * (cv + sv));
         y1 = amp * (-p1 * (sv + cv) + q1 * (sv - cv));
