@@ -77,8 +77,9 @@ host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
 	@for t in $(TESTS); do echo "== $$t"; ./$(B)/host/$$t || exit 1; done
 	@echo "== cli"; bash host_tests/test_cli.sh $(B)/host/mdr
 
-san-tests: $(B)/san/test_unit $(B)/san/test_vectors
-	@for t in test_unit test_vectors; do echo "== sanitized $$t"; ./$(B)/san/$$t || exit 1; done
+SAN_TESTS := test_unit test_vectors
+san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
+	@for t in $(SAN_TESTS); do echo "== sanitized $$t"; ./$(B)/san/$$t || exit 1; done
 
 # The README's test command. Installs what is missing (deps), then: host
 # tests (unit, lib vs committed ref vectors, ref vs closed forms, lib vs GSL
@@ -88,7 +89,7 @@ test: deps
 	$(MAKE) --no-print-directory host-tests
 	$(MAKE) --no-print-directory san-tests
 	$(MAKE) --no-print-directory cross
-	@echo "make test: all passed"
+	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) $(CROSS_CFGS)) passed, 0 failed"
 
 demo: $(B)/host/afm_demo
 	./$(B)/host/afm_demo $(B)/demo
