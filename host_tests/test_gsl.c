@@ -59,6 +59,16 @@ static const ref_scene scenes[] = {
 
 static double worst[2];
 
+/* the scene in both arithmetics (f32 from float-rounded inputs) and the
+ * f64 default starting radius */
+static void init_pair(const ref_scene *s, mdr_contact_f64 *c, mdr_contact_f32 *cf, double *a0)
+{
+    float pf[3] = {(float)s->p[0], (float)s->p[1], (float)s->p[2]};
+    assert_int_equal(mdr_contact_init_f64(c, (uint8_t)s->kind, s->p, s->E, s->w), MDR_OK);
+    assert_int_equal(mdr_contact_init_f32(cf, (uint8_t)s->kind, pf, (float)s->E, (float)s->w), MDR_OK);
+    assert_int_equal(mdr_default_start_f64(c, a0), MDR_OK);
+}
+
 static void stress_vs_ref(void **st)
 {
     (void)st;
@@ -67,10 +77,7 @@ static void stress_vs_ref(void **st)
         mdr_contact_f64 c;
         mdr_contact_f32 cf;
         double a, a0;
-        float pf[3] = {(float)s->p[0], (float)s->p[1], (float)s->p[2]};
-        assert_int_equal(mdr_contact_init_f64(&c, (uint8_t)s->kind, s->p, s->E, s->w), MDR_OK);
-        assert_int_equal(mdr_contact_init_f32(&cf, (uint8_t)s->kind, pf, (float)s->E, (float)s->w), MDR_OK);
-        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        init_pair(s, &c, &cf, &a0);
         a = s->kind == MDR_PROFILE_FLATPUNCH ? s->p[0] : 0.4 * a0;
         if (s->kind == MDR_PROFILE_FLATTIP && a < 1.3 * s->p[1]) {
             a = 1.3 * s->p[1];
@@ -110,13 +117,10 @@ static void G_vs_ref(void **st)
         mdr_contact_f64 c;
         mdr_contact_f32 cf;
         double a0;
-        float pf[3] = {(float)s->p[0], (float)s->p[1], (float)s->p[2]};
         if (s->kind == MDR_PROFILE_FLATPUNCH) {
             continue;
         }
-        assert_int_equal(mdr_contact_init_f64(&c, (uint8_t)s->kind, s->p, s->E, s->w), MDR_OK);
-        assert_int_equal(mdr_contact_init_f32(&cf, (uint8_t)s->kind, pf, (float)s->E, (float)s->w), MDR_OK);
-        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        init_pair(s, &c, &cf, &a0);
         for (double q = 0.01; q < 1.0; q *= 1.9) {
             double a = (double)(float)(q * a0), G, want;
             float Gf;

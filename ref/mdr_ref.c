@@ -137,19 +137,28 @@ static double g_integrand_pow(double r, void *v)
     return c->s->p[0] * c->s->p[1] / sqrt(c->x + r);
 }
 
+/* Where g is not identically zero on [0, x]: returns 0 if it is (flat
+ * punch; flattened tip up to b), else 1 with *lo the start of its support. */
+static int g_support(const ref_scene *s, double x, double *lo)
+{
+    *lo = 0.0;
+    if (s->kind == MDR_PROFILE_FLATPUNCH) {
+        return 0;
+    }
+    if (s->kind == MDR_PROFILE_FLATTIP) {
+        *lo = s->p[1];
+        return x > s->p[1];
+    }
+    return 1;
+}
+
 static double ref_g_level(const ref_scene *s, double x, int level)
 {
     struct gctx c = {s, x};
     gsl_function F = {g_integrand, &c};
-    double lo = 0.0, alpha = 0.0;
-    if (s->kind == MDR_PROFILE_FLATPUNCH) {
+    double lo, alpha = 0.0;
+    if (!g_support(s, x, &lo)) {
         return 0.0;
-    }
-    if (s->kind == MDR_PROFILE_FLATTIP) {
-        if (x <= s->p[1]) {
-            return 0.0;
-        }
-        lo = s->p[1];
     }
     if (s->kind == MDR_PROFILE_POWERLAW) {
         F.function = g_integrand_pow;
@@ -229,15 +238,9 @@ static double G_integrand(double x, void *v)
 double ref_G(const ref_scene *s, double a)
 {
     gsl_function F = {G_integrand, (void *)s};
-    double lo = 0.0;
-    if (s->kind == MDR_PROFILE_FLATPUNCH) {
+    double lo;
+    if (!g_support(s, a, &lo)) {
         return 0.0;
-    }
-    if (s->kind == MDR_PROFILE_FLATTIP) {
-        if (a <= s->p[1]) {
-            return 0.0;
-        }
-        lo = s->p[1];
     }
     if (s->kind == MDR_PROFILE_WAVY) {
         /* one panel per wavelength of the oscillating g */

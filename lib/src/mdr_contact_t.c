@@ -452,16 +452,11 @@ static mdr_status MDR_SFX(mdr_c_ctrl)(const MDR_SFX(mdr_contact) *c, uint8_t con
                                       MDR_T *v, MDR_T *dv, MDR_SFX(mdr_eqstate) *e)
 {
     mdr_status st = MDR_SFX(mdr_c_eq)(c, a, e);
-    if (st == MDR_E_OVERFLOW && c->kind == MDR_PROFILE_FLATTIP && a == c->k[1]) {
-        /* the rim of the flat, where g' = +inf: the limit from above (stable,
-         * slope +inf) with d, F continuous (g(b) = G(b) = 0) */
-        e->d = MDR_K(0.0) - e->dl; /* +0, not -0, without adhesion */
-        e->F = MDR_K(0.0) - MDR_K(2.0) * c->E * a * e->dl;
-        *v = control == MDR_CONTROL_LOAD ? e->F : (control == MDR_CONTROL_GRIPS ? e->d : e->d + e->F / km);
-        *dv = MDR_MAXV;
-        return MDR_OK;
-    }
-    if (st != MDR_OK) {
+    /* the rim of the flattened tip, a = b: only the slopes are infinite (g'
+     * = +inf); d and F are set and finite (g(b) = G(b) = 0). The search takes
+     * the limit from above: stable, slope +inf. */
+    bool rim = st == MDR_E_OVERFLOW && c->kind == MDR_PROFILE_FLATTIP && a == c->k[1];
+    if (st != MDR_OK && !rim) {
         return st;
     }
     if (control == MDR_CONTROL_LOAD) {
@@ -473,6 +468,9 @@ static mdr_status MDR_SFX(mdr_c_ctrl)(const MDR_SFX(mdr_contact) *c, uint8_t con
     } else {
         *v = e->d + e->F / km;
         *dv = e->dd_da + e->dF_da / km;
+    }
+    if (rim) {
+        *dv = MDR_MAXV;
     }
     return MDR_OK;
 }
@@ -523,8 +521,8 @@ static mdr_status MDR_SFX(mdr_c_bisect)(const MDR_SFX(mdr_contact) *c, uint8_t c
 mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control, MDR_T k_m, MDR_T a_start,
                                  MDR_SFX(mdr_critstate) *out)
 {
-    MDR_SFX(mdr_eqstate) e, estar;
-    MDR_T a, v, dv, amin, vstar = MDR_K(0.0);
+    MDR_SFX(mdr_eqstate) estar; /* state at a (control value vstar, slope dv) */
+    MDR_T a, dv, amin, vstar;
     mdr_status st;
     int steps = 0;
     uint16_t jumps = 0;
@@ -549,7 +547,7 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
     }
     amin = a_start * MDR_CRIT_AMIN;
     a = a_start;
-    st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &v, &dv, &e);
+    st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &vstar, &dv, &estar);
     if (st != MDR_OK) {
         return st;
     }
@@ -587,15 +585,16 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
                 }
                 a = hi;
             }
+            st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &vstar, &dv, &estar);
+            if (st != MDR_OK) {
+                return st;
+            }
         }
-        /* a: end of a stable branch (or an unstable start). Jump at constant
-         * control to the largest a' < a with c(a') = c(a), if any. */
-        st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &vstar, &dv, &estar);
-        if (st != MDR_OK) {
-            return st;
-        }
+        /* a: end of a stable branch (or an unstable start or landing), its
+         * state in estar. Jump at constant control to the largest a' < a with
+         * c(a') = c(a), if any. */
         {
-            MDR_T ap = a, an = a, vn = vstar, dvn;
+            MDR_T ap = a, an, vn, dvn;
             MDR_SFX(mdr_eqstate) en;
             bool found = false;
             for (;;) {
@@ -636,7 +635,7 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
                 a = lo;
             }
             jumps++;
-            st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &v, &dv, &e);
+            st = MDR_SFX(mdr_c_ctrl)(c, control, k_m, a, &vstar, &dv, &estar);
             if (st != MDR_OK) {
                 return st;
             }
