@@ -253,10 +253,9 @@ static void curves_vs_ref(void **state)
     assert_true(rows > 10000);
 }
 
-static void report(void **state)
+static void report(void)
 {
     int k, ar;
-    (void)state;
     printf("largest error vs ref/ (relative; curves relative to max|F|, max|d| of the curve)\n");
     printf("%-11s %-5s %10s %10s %10s %10s\n", "profile", "arith", "critical", "curve F", "curve d",
            "g, g'");
@@ -273,7 +272,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(critical_vs_ref),
         cmocka_unit_test(curves_vs_ref),
-        cmocka_unit_test(report),
     };
-    return cmocka_run_group_tests_name("lib_vs_ref_vectors", tests, NULL, NULL);
+    int rc = cmocka_run_group_tests_name("lib_vs_ref_vectors", tests, NULL, NULL);
+    report(); /* the README's accuracy table */
+    return rc;
 }
