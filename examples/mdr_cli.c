@@ -8,6 +8,22 @@
  *   mdr stress   <profile> <material> --a A --r R
  *   mdr stress   <profile> <material> --control MODE [--k-machine K] --r S
  *                (at the critical state, r = S * a_c with 0 <= S < 1)
+ *   mdr cycle    <profile> <material> --control load|grips|machine
+ *                [--k-machine K] [--springs N] [--w-adv W] [--a-max A]
+ *                --path V1,V2,... --steps-per-segment S
+ *                drives the spring engine along the piecewise-linear path of
+ *                the controlled variable (d [m], F [N] or z [m]); CSV
+ *                step,z,d,F,a,event on stdout, one JSON summary on stderr:
+ *                pull_off_F pull_off_d events dissipated (+ cycles, jumps,
+ *                springs, a_max, event_list)
+ *   mdr table    <profile> [--springs N] --a-max A [--name NAME]
+ *                prints the spring table as const C arrays (for flash)
+ *
+ *   <profile> also: --profile table --file FILE (CSV r,f in metres; cycle
+ *               and table only; the table extends to the last r)
+ *   --springs N  springs of the table (default 1024, up to MDR_SPRINGS_MAX)
+ *   --a-max A    table extent (cycle: default 1.25 x the largest radius the
+ *                path can reach, from the closed-form equilibrium)
  *
  *   <profile>:  --profile paraboloid --R R | cone --theta RAD |
  *               powerlaw --C C --n N | flatpunch --a0 A0 | sphere --R R |
@@ -24,14 +40,22 @@
 
 #include "mdr.h"
 
-enum { CMD_EQ, CMD_CRITICAL, CMD_CURVE, CMD_STRESS };
+enum { CMD_EQ, CMD_CRITICAL, CMD_CURVE, CMD_STRESS, CMD_CYCLE, CMD_TABLE };
+
+/* --profile table */
+#define KIND_TABLE 0u
 
 struct cli_args {
     int cmd;
     uint8_t kind, control;
-    double p[3], E, w, a, r, a_max, a_start, k_m;
-    long n;
-    int f64, have_control, have_a_start;
+    double p[3], E, w, a, r, a_max, a_start, k_m, w_adv;
+    long n, springs, steps;
+    int f64, have_control, have_a_start, have_amax;
+    double *path; /* --path values */
+    long npath;
+    double *tr, *tf; /* --file samples */
+    long ntab;
+    const char *name, *file;
 };
 
 static int usage_error(const char *msg, const char *what)
@@ -56,16 +80,97 @@ static int parse_num(const char *s, double *v)
     return *end == '\0';
 }
 
+/* "V1,V2,..." -> malloc'd array; 0 on a malformed list */
+static long parse_list(const char *s, double **out)
+{
+    long n = 1, i = 0;
+    const char *c;
+    double *v;
+    for (c = s; *c; c++) {
+        n += *c == ',';
+    }
+    v = malloc((size_t)n * sizeof *v);
+    if (v == NULL) {
+        return 0;
+    }
+    while (i < n) {
+        char *end;
+        v[i++] = strtod(s, &end);
+        if (end == s || (*end != ',' && *end != '\0')) {
+            free(v);
+            return 0;
+        }
+        s = end + 1;
+    }
+    *out = v;
+    return n;
+}
+
+/* CSV of r,f (optional header line, '#' comments) -> arrays; count or -1 */
+static long read_table(const char *file, double **r, double **f)
+{
+    FILE *fp = fopen(file, "r");
+    char line[256];
+    long n = 0, cap = 0;
+    double *rr = NULL, *ff = NULL;
+    if (fp == NULL) {
+        return -1;
+    }
+    while (fgets(line, sizeof line, fp) != NULL) {
+        double a, b;
+        char tail[2];
+        if (line[0] == '#' || line[0] == '\n') {
+            continue;
+        }
+        if (sscanf(line, " %lf , %lf %1s", &a, &b, tail) != 2) {
+            if (n == 0 && rr == NULL && strchr(line, 'r') != NULL) {
+                continue; /* header */
+            }
+            n = -1;
+            break;
+        }
+        if (n == cap) {
+            double *nr, *nf;
+            cap = cap ? 2 * cap : 256;
+            nr = realloc(rr, (size_t)cap * sizeof *rr);
+            nf = realloc(ff, (size_t)cap * sizeof *ff);
+            if (nr == NULL || nf == NULL) {
+                free(nr ? nr : rr);
+                free(nf ? nf : ff);
+                fclose(fp);
+                return -1;
+            }
+            rr = nr;
+            ff = nf;
+        }
+        rr[n] = a;
+        ff[n] = b;
+        n++;
+    }
+    fclose(fp);
+    if (n < 0) {
+        free(rr);
+        free(ff);
+        return -1;
+    }
+    *r = rr;
+    *f = ff;
+    return n;
+}
+
 #define CLI_T float
 #define CLI_SFX(name) name##_f32
 #define CLI_FMT "%.9g"
+#define CLI_EFMT "%.8e"
 #include "mdr_cli_t.h"
 #undef CLI_T
 #undef CLI_SFX
 #undef CLI_FMT
+#undef CLI_EFMT
 #define CLI_T double
 #define CLI_SFX(name) name##_f64
 #define CLI_FMT "%.17g"
+#define CLI_EFMT "%.16e"
 #include "mdr_cli_t.h"
 
 /* profile name -> kind and the flags of its parameters */
@@ -83,29 +188,39 @@ static const struct {
     {"wavy", MDR_PROFILE_WAVY, {"--R", "--h", "--lambda"}},
 };
 
+static int parse_count(double v, long lo, long hi, long *out)
+{
+    if (!(v >= (double)lo && v <= (double)hi) || v != (double)(long)v) {
+        return 0;
+    }
+    *out = (long)v;
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
+    static const char *cmds[] = {"eq", "critical", "curve", "stress", "cycle", "table"};
     struct cli_args A;
     const char *profile = NULL;
     const char *names[32];
     double vals[32];
-    int nflag = 0, i, k, pi = -1;
-    int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_amax = 0, have_n = 0;
+    int nflag = 0, i, k, pi = -1, rc;
+    int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_n = 0, have_steps = 0;
     int used[32] = {0};
 
     memset(&A, 0, sizeof A);
+    A.springs = 1024;
+    A.name = "mdr_tip";
     if (argc < 2) {
-        return usage_error("missing command (eq, critical, curve, stress)", NULL);
+        return usage_error("missing command (eq, critical, curve, stress, cycle, table)", NULL);
     }
-    if (strcmp(argv[1], "eq") == 0) {
-        A.cmd = CMD_EQ;
-    } else if (strcmp(argv[1], "critical") == 0) {
-        A.cmd = CMD_CRITICAL;
-    } else if (strcmp(argv[1], "curve") == 0) {
-        A.cmd = CMD_CURVE;
-    } else if (strcmp(argv[1], "stress") == 0) {
-        A.cmd = CMD_STRESS;
-    } else {
+    A.cmd = -1;
+    for (k = 0; k < (int)(sizeof cmds / sizeof cmds[0]); k++) {
+        if (strcmp(argv[1], cmds[k]) == 0) {
+            A.cmd = k;
+        }
+    }
+    if (A.cmd < 0) {
         return usage_error("unknown command", argv[1]);
     }
     for (i = 2; i < argc; i++) {
@@ -145,6 +260,34 @@ int main(int argc, char **argv)
             A.have_control = 1;
             continue;
         }
+        if (strcmp(f, "--path") == 0 && A.cmd == CMD_CYCLE) {
+            free(A.path);
+            A.npath = parse_list(argv[++i], &A.path);
+            if (A.npath < 2) {
+                return usage_error("--path takes two or more numbers V1,V2,...", argv[i]);
+            }
+            continue;
+        }
+        if (strcmp(f, "--file") == 0 && (A.cmd == CMD_CYCLE || A.cmd == CMD_TABLE)) {
+            A.file = argv[++i];
+            continue;
+        }
+        if (strcmp(f, "--name") == 0 && A.cmd == CMD_TABLE) {
+            const char *v = argv[++i];
+            size_t j;
+            for (j = 0; v[j]; j++) {
+                char ch = v[j];
+                if (!(ch == '_' || (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
+                      (j > 0 && ch >= '0' && ch <= '9'))) {
+                    return usage_error("--name must be a C identifier", v);
+                }
+            }
+            if (j == 0) {
+                return usage_error("--name must be a C identifier", v);
+            }
+            A.name = v;
+            continue;
+        }
         if (nflag == 32) {
             return usage_error("too many flags", f);
         }
@@ -157,67 +300,93 @@ int main(int argc, char **argv)
     if (profile == NULL) {
         return usage_error("missing --profile", NULL);
     }
-    for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
-        if (strcmp(profiles[k].name, profile) == 0) {
-            pi = k;
+    if (strcmp(profile, "table") == 0) {
+        if (A.cmd != CMD_CYCLE && A.cmd != CMD_TABLE) {
+            return usage_error("--profile table works with cycle and table only", NULL);
         }
-    }
-    if (pi < 0) {
-        return usage_error("unknown profile", profile);
-    }
-    A.kind = profiles[pi].kind;
-    for (k = 0; k < 3 && profiles[pi].flags[k] != NULL; k++) {
-        int found = 0;
-        for (i = 0; i < nflag; i++) {
-            if (strcmp(names[i], profiles[pi].flags[k]) == 0) {
-                A.p[k] = vals[i];
-                used[i] = found = 1;
+        if (A.file == NULL) {
+            return usage_error("--profile table needs --file FILE", NULL);
+        }
+        A.kind = KIND_TABLE;
+    } else {
+        for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
+            if (strcmp(profiles[k].name, profile) == 0) {
+                pi = k;
             }
         }
-        if (!found) {
-            return usage_error("missing profile parameter", profiles[pi].flags[k]);
+        if (pi < 0) {
+            return usage_error("unknown profile", profile);
+        }
+        A.kind = profiles[pi].kind;
+        for (k = 0; k < 3 && profiles[pi].flags[k] != NULL; k++) {
+            int found = 0;
+            for (i = 0; i < nflag; i++) {
+                if (strcmp(names[i], profiles[pi].flags[k]) == 0) {
+                    A.p[k] = vals[i];
+                    used[i] = found = 1;
+                }
+            }
+            if (!found) {
+                return usage_error("missing profile parameter", profiles[pi].flags[k]);
+            }
         }
     }
     for (i = 0; i < nflag; i++) {
         const char *f = names[i];
+        int c = A.cmd;
         if (used[i]) {
             continue;
         }
-        if (strcmp(f, "--E") == 0) {
+        if (strcmp(f, "--E") == 0 && c != CMD_TABLE) {
             A.E = vals[i];
             have_E = 1;
-        } else if (strcmp(f, "--w") == 0) {
+        } else if (strcmp(f, "--w") == 0 && c != CMD_TABLE) {
             A.w = vals[i];
             have_w = 1;
-        } else if (strcmp(f, "--a") == 0 && (A.cmd == CMD_EQ || A.cmd == CMD_STRESS)) {
+        } else if (strcmp(f, "--a") == 0 && (c == CMD_EQ || c == CMD_STRESS)) {
             A.a = vals[i];
             have_a = 1;
-        } else if (strcmp(f, "--r") == 0 && A.cmd == CMD_STRESS) {
+        } else if (strcmp(f, "--r") == 0 && c == CMD_STRESS) {
             A.r = vals[i];
             have_r = 1;
-        } else if (strcmp(f, "--a-max") == 0 && A.cmd == CMD_CURVE) {
+        } else if (strcmp(f, "--a-max") == 0 && (c == CMD_CURVE || c == CMD_CYCLE || c == CMD_TABLE)) {
             A.a_max = vals[i];
-            have_amax = 1;
-        } else if (strcmp(f, "--n") == 0 && A.cmd == CMD_CURVE) {
-            if (vals[i] < 1 || vals[i] > 10000000 || vals[i] != (double)(long)vals[i]) {
+            A.have_amax = 1;
+        } else if (strcmp(f, "--n") == 0 && c == CMD_CURVE) {
+            if (!parse_count(vals[i], 1, 10000000, &A.n)) {
                 return usage_error("--n must be an integer in [1, 1e7]", NULL);
             }
-            A.n = (long)vals[i];
             have_n = 1;
-        } else if (strcmp(f, "--k-machine") == 0 && (A.cmd == CMD_CRITICAL || A.cmd == CMD_STRESS)) {
+        } else if (strcmp(f, "--springs") == 0 && (c == CMD_CYCLE || c == CMD_TABLE)) {
+            if (!parse_count(vals[i], MDR_SPRINGS_MIN, MDR_SPRINGS_MAX, &A.springs)) {
+                return usage_error("--springs must be an integer in [2, 16384]", NULL);
+            }
+        } else if (strcmp(f, "--steps-per-segment") == 0 && c == CMD_CYCLE) {
+            if (!parse_count(vals[i], 1, 10000000, &A.steps)) {
+                return usage_error("--steps-per-segment must be an integer in [1, 1e7]", NULL);
+            }
+            have_steps = 1;
+        } else if (strcmp(f, "--w-adv") == 0 && c == CMD_CYCLE) {
+            A.w_adv = vals[i];
+        } else if (strcmp(f, "--k-machine") == 0 &&
+                   (c == CMD_CRITICAL || c == CMD_STRESS || c == CMD_CYCLE)) {
             A.k_m = vals[i];
-        } else if (strcmp(f, "--a-start") == 0 && A.cmd == CMD_CRITICAL) {
+        } else if (strcmp(f, "--a-start") == 0 && c == CMD_CRITICAL) {
             A.a_start = vals[i];
             A.have_a_start = 1;
         } else {
             return usage_error("unknown or misplaced flag", f);
         }
     }
-    if (!have_E) {
-        return usage_error("missing --E", NULL);
-    }
-    if (!have_w) {
-        return usage_error("missing --w", NULL);
+    if (A.cmd == CMD_TABLE) {
+        A.E = 1.0; /* geometry only: any valid material */
+    } else {
+        if (!have_E) {
+            return usage_error("missing --E", NULL);
+        }
+        if (!have_w) {
+            return usage_error("missing --w", NULL);
+        }
     }
     switch (A.cmd) {
     case CMD_EQ:
@@ -226,13 +395,26 @@ int main(int argc, char **argv)
         }
         break;
     case CMD_CURVE:
-        if (!have_amax || !have_n) {
+        if (!A.have_amax || !have_n) {
             return usage_error("curve needs --a-max and --n", NULL);
         }
         break;
     case CMD_CRITICAL:
         if (!A.have_control) {
             return usage_error("missing --control", NULL);
+        }
+        break;
+    case CMD_CYCLE:
+        if (!A.have_control) {
+            return usage_error("missing --control", NULL);
+        }
+        if (A.path == NULL || !have_steps) {
+            return usage_error("cycle needs --path V1,V2,... and --steps-per-segment S", NULL);
+        }
+        break;
+    case CMD_TABLE:
+        if (!A.have_amax && A.kind != KIND_TABLE) {
+            return usage_error("table needs --a-max", NULL);
         }
         break;
     default:
@@ -244,5 +426,18 @@ int main(int argc, char **argv)
     if (A.have_control && A.control == MDR_CONTROL_MACHINE && !(A.k_m > 0.0)) {
         return usage_error("--control machine needs --k-machine > 0", NULL);
     }
-    return A.f64 ? run_f64(&A) : run_f32(&A);
+    if (A.kind == KIND_TABLE) {
+        A.ntab = read_table(A.file, &A.tr, &A.tf);
+        if (A.ntab < 0) {
+            return usage_error("cannot read r,f pairs from", A.file);
+        }
+        if (A.ntab > 65535) {
+            return usage_error("more than 65535 points in", A.file);
+        }
+    }
+    rc = A.f64 ? run_f64(&A) : run_f32(&A);
+    free(A.path);
+    free(A.tr);
+    free(A.tf);
+    return rc;
 }

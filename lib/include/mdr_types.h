@@ -45,6 +45,14 @@ typedef int8_t mdr_status;
 #define MDR_E_SINGULAR (-9)
 /** A result would overflow the arithmetic's range (no inf or NaN escapes). */
 #define MDR_E_OVERFLOW (-10)
+/** The contact edge would move past the last spring of the table (the
+ *  engine's state is left as it was and MDR_FLAG_OUTSIDE is set). */
+#define MDR_E_OUTSIDE (-11)
+/** A tabulated profile is unusable: r not strictly increasing from r = 0,
+ *  fewer than MDR_TABLE_MIN_POINTS points, or g(0) != 0. */
+#define MDR_E_TABLE (-12)
+/** Number of springs outside [MDR_SPRINGS_MIN, MDR_SPRINGS_MAX]. */
+#define MDR_E_SIZE (-13)
 
 /** Profile kinds (uint8_t values; the meaning of p[0..2] for each). */
 #define MDR_PROFILE_PARABOLOID 1u /**< f = r^2/(2R);          p = {R}            */

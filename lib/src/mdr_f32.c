@@ -8,3 +8,4 @@
 
 #include "mdr_math_t.c"
 #include "mdr_contact_t.c"
+#include "mdr_engine_t.c"

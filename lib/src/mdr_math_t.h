@@ -15,6 +15,7 @@ MDR_T MDR_SFX(mdr_m_log)(MDR_T x);
 MDR_T MDR_SFX(mdr_m_exp)(MDR_T x);
 MDR_T MDR_SFX(mdr_m_powscaled)(MDR_T c, MDR_T x, MDR_T y);
 MDR_T MDR_SFX(mdr_m_atanh)(MDR_T t);
+MDR_T MDR_SFX(mdr_m_atan2p)(MDR_T y, MDR_T x);
 MDR_T MDR_SFX(mdr_m_atanh_m)(MDR_T t);
 void MDR_SFX(mdr_m_sincos)(MDR_T x, MDR_T *s, MDR_T *c);
 MDR_T MDR_SFX(mdr_m_gamma_ratio_half)(MDR_T m);

@@ -1,5 +1,6 @@
 /* mdr_status.c: names of the status codes (shared by every arithmetic). */
 #include "mdr_types.h"
+#include "mdr_engine.h"
 
 const char *mdr_status_str(mdr_status s)
 {
@@ -15,6 +16,23 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_NOCONV: return "iteration cap reached";
     case MDR_E_SINGULAR: return "quantity is singular at this point";
     case MDR_E_OVERFLOW: return "result overflows the arithmetic";
+    case MDR_E_OUTSIDE: return "contact edge beyond the last spring of the table";
+    case MDR_E_TABLE: return "tabulated profile unusable (order, count or g(0))";
+    case MDR_E_SIZE: return "number of springs out of range";
     default: return "unknown status";
+    }
+}
+
+const char *mdr_event_str(uint8_t event)
+{
+    switch (event) {
+    case MDR_EV_NONE: return "none";
+    case MDR_EV_CONTACT: return "contact";
+    case MDR_EV_JUMP_IN: return "jump-in";
+    case MDR_EV_JUMP: return "jump";
+    case MDR_EV_PULL_OFF: return "pull-off";
+    case MDR_EV_RECONTACT: return "re-contact";
+    case MDR_EV_SEPARATION: return "separation";
+    default: return "unknown event";
     }
 }

@@ -1,0 +1,60 @@
+/*
+ * mdr_engine.h: the real-time spring engine. A fixed-size table of springs
+ * (caller-owned, or a const array generated on the host by `mdr table`) and
+ * a caller-owned contact state that is stepped once per control tick with
+ * the indentation d, the force F or the base position z of a compliant
+ * machine. One set of functions per arithmetic (_f32; _f64 on the host); the
+ * contract is written once in mdr_engine_t.h.
+ */
+#ifndef MDR_ENGINE_H
+#define MDR_ENGINE_H
+
+#include <stddef.h>
+
+#include "mdr_contact.h"
+
+/** Fewest and most springs of a table. The upper limit keeps node indices
+ *  in uint16_t and the node abscissae i*h exact to an ulp. */
+#define MDR_SPRINGS_MIN 2
+#define MDR_SPRINGS_MAX 16384
+/** Nodes of a table of n springs (its spring boundaries x_i = i*h). */
+#define MDR_TABLE_NODES(n) ((size_t)(n) + 1u)
+/** Bytes of node storage for n springs, per arithmetic. */
+#define MDR_TABLE_BYTES_F32(n) (MDR_TABLE_NODES(n) * sizeof(mdr_node_f32))
+#define MDR_TABLE_BYTES_F64(n) (MDR_TABLE_NODES(n) * sizeof(mdr_node_f64))
+/** Fewest points of a tabulated gap profile r_i, f(r_i). */
+#define MDR_TABLE_MIN_POINTS 3
+
+/** Events of a step (mdr_step_<type>.event). When several happen in one
+ *  step, the last one is reported and mdr_step.jumps counts the jumps. */
+#define MDR_EV_NONE 0u       /**< quasi-static: edge pinned or moving smoothly */
+#define MDR_EV_CONTACT 1u    /**< first touch of this instance, without a jump (w_adv = 0) */
+#define MDR_EV_JUMP_IN 2u    /**< touch followed by a jump into contact (w_adv > 0) */
+#define MDR_EV_JUMP 3u       /**< jump of the edge inside contact (wavy profile) */
+#define MDR_EV_PULL_OFF 4u   /**< jump to complete separation (an unstable end of the branch) */
+#define MDR_EV_RECONTACT 5u  /**< touch after a separation, without a jump */
+#define MDR_EV_SEPARATION 6u /**< contact shrank smoothly to a = 0 (no adhesion hysteresis left) */
+
+/** Sticky flags (mdr_engine_<type>.flags): set by a step, cleared only by
+ *  mdr_engine_clear_flags(). */
+#define MDR_FLAG_OUTSIDE 1u  /**< a step was refused: the edge would leave the table */
+#define MDR_FLAG_NOCONV 2u   /**< a root or fold search hit its iteration cap */
+
+/** Short English name of an event code ("pull-off", ...). Never NULL. */
+const char *mdr_event_str(uint8_t event);
+
+#define MDR_T float
+#define MDR_SFX(name) name##_f32
+#include "mdr_engine_t.h"
+#undef MDR_T
+#undef MDR_SFX
+
+#ifndef MDR_NO_F64
+#define MDR_T double
+#define MDR_SFX(name) name##_f64
+#include "mdr_engine_t.h"
+#undef MDR_T
+#undef MDR_SFX
+#endif
+
+#endif /* MDR_ENGINE_H */

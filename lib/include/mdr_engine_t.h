@@ -1,0 +1,182 @@
+/*
+ * mdr_engine_t.h: declarations of one arithmetic of the spring engine.
+ * Included by mdr_engine.h once per arithmetic (MDR_T, MDR_SFX defined); read
+ * it with T = float and suffix _f32.
+ *
+ * The table. The equivalent profile g(x) (seed 4.46) is held at the n+1
+ * spring boundaries x_i = i*h, 0 <= x_i <= x_max = n*h, as g_i, the prefix
+ * integral G_i = int_0^{x_i} g, t_i = sqrt(x_i) and, per spring, the excess
+ * q_i = int_{x_i}^{x_{i+1}} g - h*(g_i + g_{i+1})/2 of its integral over the
+ * trapezoid. Between nodes g is the quadratic through g_i, g_{i+1} whose
+ * integral is exact (q_i), and G its exact integral, so G is continuous,
+ * G' = g, and g is reproduced exactly for the paraboloid and the cone; for a
+ * smooth g the interpolation error is O(h^3) (measured: README, "Spring
+ * engine"). dl(a) = c*sqrt(a) is never interpolated: the engine solves in
+ * t = sqrt(a), where every branch is a polynomial of degree <= 4.
+ *
+ * The state machine (DESIGN section 2, seed 4.1/4.21). With the edge at a
+ * and dl_w(a) = sqrt(2 pi a w/E*), dl_adv(a) = sqrt(2 pi a w_adv/E*):
+ *   advance while d > g(a) - dl_adv(a);  recede while d < g(a) - dl_w(a);
+ *   otherwise the edge is pinned and F = 2E*(a d - G(a)) follows d.
+ * The controlled variable u is d (fixed grips), F (fixed load) or
+ * z = d + F/k_m (machine of stiffness k_m). Along an advancing or receding
+ * edge u is a function U(a); the edge follows U while dU/da > 0 and jumps at
+ * constant u where dU/da changes sign (a fold): to the next a with the same
+ * U, or to separation (pull-off) when there is none.
+ */
+
+/** One spring boundary of a table (see above). */
+typedef struct {
+    MDR_T g; /**< g(x_i) [m] */
+    MDR_T G; /**< int_0^{x_i} g dx [m^2] */
+    MDR_T t; /**< sqrt(x_i) [m^0.5] */
+    MDR_T q; /**< integral excess of spring i over its trapezoid [m^2]; 0 at i = n */
+} MDR_SFX(mdr_node);
+
+/** A spring table: geometry only (no material), so it can live in flash. */
+typedef struct {
+    const MDR_SFX(mdr_node) *node; /**< n+1 nodes */
+    MDR_T h;                       /**< spring width [m]: x_i = i*h */
+    uint16_t n;                    /**< number of springs */
+    uint8_t wall;                  /**< 1: g = +inf beyond x_n (flat punch: the edge stops there) */
+} MDR_SFX(mdr_table);
+
+/** The engine: material, control constants and the contact state.
+ *  Caller-owned; fill it with mdr_engine_init_<type>() only, then read it
+ *  freely and change it only through the step functions. */
+typedef struct {
+    const MDR_SFX(mdr_table) *tab;
+    MDR_T E;      /**< E* [Pa] */
+    MDR_T c_w;    /**< sqrt(2 pi w/E*) [m^0.5]: dl_w(a) = c_w sqrt(a) */
+    MDR_T c_adv;  /**< sqrt(2 pi w_adv/E*) [m^0.5] */
+    MDR_T k_m;    /**< machine stiffness [N/m]; 0: no machine (step_z refused) */
+    MDR_T kappa;  /**< 2E* /k_m [1/m]; 0 without machine */
+    /* state of the edge */
+    MDR_T a;      /**< contact radius [m]; 0 when separated */
+    MDR_T t;      /**< sqrt(a) [m^0.5] */
+    MDR_T g;      /**< g(a) [m] */
+    MDR_T Ga;     /**< G(a) [m^2] */
+    MDR_T d;      /**< indentation [m] after the last step */
+    MDR_T F;      /**< force [N] after the last step */
+    uint16_t k;   /**< spring holding the edge: x_k <= a <= x_{k+1} */
+    uint8_t contact; /**< 1 in contact, 0 separated */
+    uint8_t touched; /**< 1 once the instance has been in contact */
+    uint8_t flags;   /**< sticky MDR_FLAG_* */
+    /* energy bookkeeping */
+    MDR_T work;      /**< int F dd along the path since init [J] */
+    MDR_T work_c;    /**< compensation term of that sum (Kahan) */
+    MDR_T work_sep;  /**< work at the last complete separation [J] */
+    MDR_T dissipated; /**< energy dissipated over completed cycles [J] */
+    MDR_T last_cycle; /**< energy dissipated in the last completed cycle [J] */
+    uint32_t cycles;  /**< completed cycles (approach, then complete separation) */
+} MDR_SFX(mdr_engine);
+
+/** What one step did. All SI; "before"/"after" describe the last jump of
+ *  the step and equal the final state when there was none. */
+typedef struct {
+    MDR_T z;       /**< d + F/k_m (d without a machine) [m] */
+    MDR_T d;       /**< indentation [m] */
+    MDR_T F;       /**< force [N]; 0 when separated */
+    MDR_T a;       /**< contact radius [m]; 0 when separated */
+    MDR_T a0, d0, F0; /**< last stable state before the jump (the fold) */
+    MDR_T a1, d1, F1; /**< state right after the jump, same control value */
+    uint8_t event; /**< MDR_EV_* */
+    uint8_t jumps; /**< jumps in this step (saturates at 255) */
+} MDR_SFX(mdr_step);
+
+/**
+ * @brief Spring table of an analytic profile: g_i, G_i from the foundation's
+ *        closed forms (mdr_profile_eval()), q_i by 2-point Gauss-Legendre on
+ *        each spring (error O(h^5 g'''') per spring), G_i as compensated
+ *        prefix sums of the spring integrals (so G is consistent with g).
+ * @param[out] tab   table header; untouched unless MDR_OK
+ * @param[out] node  caller storage of MDR_TABLE_NODES(n) nodes
+ * @param[in]  n     springs, MDR_SPRINGS_MIN..MDR_SPRINGS_MAX
+ * @param[in]  c     an initialised contact (only its profile is used)
+ * @param[in]  x_max table extent [m], > 0 and inside the profile's domain
+ *                   (x_max < R for the sphere). Flat punch: x_max <= a0, and
+ *                   x_max == a0 makes the rim a wall (the edge stops there).
+ * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
+ *         MDR_E_OVERFLOW (x_max too large for the arithmetic)
+ */
+mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
+                                           uint16_t n, const MDR_SFX(mdr_contact) *c, MDR_T x_max);
+
+/**
+ * @brief Spring table of a tabulated gap profile f(r_i) (a measured or worn
+ *        tip), x_max = r[m-1].
+ *
+ * f' is taken linear on each interval [r_j, r_j+1]: mean slope exactly
+ * (f_j+1 - f_j)/(r_j+1 - r_j), curvature from the neighbouring slopes
+ * (one-sided at the ends), so f' has error O(h_r^2) for a smooth f and the
+ * piecewise quadratic f passes through every sample. The Abel transform
+ * g(x) = x int_0^x f'(r)/sqrt(x^2-r^2) dr is then integrated exactly over
+ * each piece: x [alpha (asin(r1/x) - asin(r0/x)) + beta (S0 - S1)],
+ * S = sqrt(x^2 - r^2), with the asin difference as one atan of a
+ * cancellation-free quotient. Order of accuracy in the sample spacing h_r: 2
+ * (measured in host_tests/test_engine.c and the README). Quadratic f
+ * (paraboloid) is reproduced to rounding. f(0) may be any value (only f'
+ * enters). Cost O(n*m) at init.
+ * @param[in] r  radii [m], r[0] = 0, strictly increasing, finite
+ * @param[in] f  gap f(r_i) [m], finite
+ * @param[in] m  points, >= MDR_TABLE_MIN_POINTS
+ * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_TABLE
+ */
+mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
+                                       uint16_t n, const MDR_T *r, const MDR_T *f, uint16_t m);
+
+/**
+ * @brief Spring table of a tabulated equivalent profile g given directly at
+ *        x_i = i*h, i = 0..n (g[0] must be 0). Between nodes g is linear
+ *        (q_i = 0) and G the trapezoidal prefix sums, exact for that g.
+ * @param[in] h  spring width [m], finite > 0
+ * @param[in] g  n+1 values [m], finite
+ * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_PARAM (h),
+ *         MDR_E_TABLE (g[0] != 0)
+ */
+mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
+                                     uint16_t n, MDR_T h, const MDR_T *g);
+
+/**
+ * @brief Start an engine on a table, separated (a = 0, d = 0, F = 0).
+ * @param[in] tab    a table from mdr_table_init_*() or a generated const
+ *                   table; must outlive the engine
+ * @param[in] E      E* > 0 [Pa]
+ * @param[in] w      work of adhesion on retraction, w >= 0 [J/m^2]
+ * @param[in] w_adv  work of adhesion on approach, 0 <= w_adv <= w [J/m^2]
+ *                   (0: non-adhesive loading; w: reversible JKR)
+ * @param[in] k_m    machine stiffness [N/m]: finite > 0, or 0 for none
+ *                   (then mdr_engine_step_z() returns MDR_E_CONTROL)
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (E, w, w_adv),
+ *         MDR_E_CONTROL (k_m < 0), MDR_E_SIZE (table header invalid)
+ */
+mdr_status MDR_SFX(mdr_engine_init)(MDR_SFX(mdr_engine) *e, const MDR_SFX(mdr_table) *tab,
+                                    MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m);
+
+/**
+ * @brief One control tick with the indentation d held (fixed grips).
+ * @param[in]  d    indentation [m], finite (negative: a gap)
+ * @param[out] out  what happened; written only on MDR_OK
+ * @return MDR_OK; MDR_E_NULL, MDR_E_NONFINITE; MDR_E_OUTSIDE (state
+ *         unchanged, MDR_FLAG_OUTSIDE set); MDR_E_NOCONV (not expected:
+ *         bisection backs every iteration; state unchanged, flag set)
+ *
+ * Cost: O(1) when the edge is pinned; otherwise O(1) plus one comparison per
+ * node the edge passes (it moves from where it was) and a safeguarded
+ * Newton solve (typically 2-4 iterations, capped) in the spring where it
+ * stops; a fold adds a bisection to locate it.
+ */
+mdr_status MDR_SFX(mdr_engine_step_d)(MDR_SFX(mdr_engine) *e, MDR_T d, MDR_SFX(mdr_step) *out);
+
+/** @brief One tick with the force F [N] held (fixed load); see step_d().
+ *  While separated the contact carries no force: out.F = 0, and d keeps the
+ *  depth at which contact was lost (the body is free). */
+mdr_status MDR_SFX(mdr_engine_step_F)(MDR_SFX(mdr_engine) *e, MDR_T F, MDR_SFX(mdr_step) *out);
+
+/** @brief One tick with the base position z = d + F/k_m [m] held through
+ *  the machine stiffness given at init; see step_d(). MDR_E_CONTROL when
+ *  the engine has no machine (k_m = 0). */
+mdr_status MDR_SFX(mdr_engine_step_z)(MDR_SFX(mdr_engine) *e, MDR_T z, MDR_SFX(mdr_step) *out);
+
+/** @brief Clear the sticky flags; returns the flags that were set. */
+uint8_t MDR_SFX(mdr_engine_clear_flags)(MDR_SFX(mdr_engine) *e);
