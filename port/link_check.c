@@ -56,4 +56,22 @@ void link_check_entry(void)
         mdr_link_sink = e.F + o.F + g + dg + G + k + s;
     }
     (void)mdr_status_str(MDR_OK);
+    {
+        /* the spring engine: every table builder and step function */
+        static mdr_node_f32 nodes[MDR_TABLE_NODES(16)];
+        static const float r[3] = {0.0f, 1e-7f, 2e-7f}, f[3] = {0.0f, 1e-9f, 4e-9f};
+        mdr_table_f32 t;
+        mdr_engine_f32 en;
+        mdr_step_f32 st;
+        (void)mdr_table_init_g_f32(&t, nodes, 2, 1e-7f, f);
+        (void)mdr_table_init_gap_f32(&t, nodes, 16, r, f, 3);
+        (void)mdr_table_init_profile_f32(&t, nodes, 16, &c, 1e-7f);
+        if (mdr_engine_init_f32(&en, &t, 1e9f, 0.1f, 0.05f, 1.0f) == MDR_OK) {
+            (void)mdr_engine_step_d_f32(&en, 1e-9f, &st);
+            (void)mdr_engine_step_F_f32(&en, 1e-9f, &st);
+            (void)mdr_engine_step_z_f32(&en, 1e-9f, &st);
+            mdr_link_sink = st.F + (float)mdr_engine_clear_flags_f32(&en);
+        }
+        (void)mdr_event_str(MDR_EV_NONE);
+    }
 }

@@ -113,8 +113,10 @@ mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_
  * g(x) = x int_0^x f'(r)/sqrt(x^2-r^2) dr is then integrated exactly over
  * each piece: x [alpha (asin(r1/x) - asin(r0/x)) + beta (S0 - S1)],
  * S = sqrt(x^2 - r^2), with the asin difference as one atan of a
- * cancellation-free quotient. Order of accuracy in the sample spacing h_r: 2
- * (measured in host_tests/test_engine.c and the README). Quadratic f
+ * cancellation-free quotient. Order of accuracy in the sample spacing h_r:
+ * f' has error O(h_r^2); with the integrable 1/sqrt kernel g converges at
+ * order 2.5 (measured 2.47 for the exact sphere, host_tests/test_engine.c,
+ * gap_table_order; README "Spring engine"). Quadratic f
  * (paraboloid) is reproduced to rounding. f(0) may be any value (only f'
  * enters). Cost O(n*m) at init.
  * @param[in] r  radii [m], r[0] = 0, strictly increasing, finite
