@@ -31,7 +31,7 @@ LIB_SRC := lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_status.c
 LIB_DEPS := $(wildcard lib/include/*.h lib/src/*.h lib/src/*.c port/host/*.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
@@ -100,6 +100,12 @@ test: deps
 	$(MAKE) --no-print-directory san-tests
 	$(MAKE) --no-print-directory cross
 	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) $(CROSS_CFGS)) passed, 0 failed"
+
+# engine step cost against N and against the naive O(N) force sum (one run)
+$(B)/host/bench_engine: host_tests/bench_engine.c $(B)/host/libmdr.a
+	$(HOSTCC) -std=c99 -Wall -Wextra -Werror -Ilib/include -O2 $< $(B)/host/libmdr.a -lm -o $@
+bench: $(B)/host/bench_engine
+	./$(B)/host/bench_engine
 
 demo: $(B)/host/afm_demo
 	./$(B)/host/afm_demo $(B)/demo

@@ -49,6 +49,43 @@ for p in "cone --theta 0.5" "powerlaw --C 2 --n 3" "flatpunch --a0 1e-6" "sphere
     $MDR critical --profile $p --E 1e6 --w 0.05 --control load >/dev/null && ok || bad "critical $p"
 done
 
+# cycle: CSV step,z,d,F,a,event on stdout, JSON summary on stderr
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+for arith in f32 f64; do
+    $MDR cycle $P --control grips --path 0,0.5e-6,-0.6e-6 --steps-per-segment 2000 --springs 256 \
+        --arith $arith >"$TMP/c.csv" 2>"$TMP/c.json" || bad "cycle grips exit ($arith)"
+    [ "$(head -1 "$TMP/c.csv")" = "step,z,d,F,a,event" ] && ok || bad "cycle header"
+    [ "$(wc -l <"$TMP/c.csv")" -eq 4002 ] && ok || bad "cycle rows: 2 segments x 2000 + 1 + header"
+    [ "$(tail -1 "$TMP/c.csv" | awk -F, '{print NF}')" -eq 6 ] && ok || bad "cycle columns"
+    j=$(cat "$TMP/c.json")
+    for k in pull_off_F pull_off_d events dissipated; do
+        [ -n "$(key "$j" $k)" ] && ok || bad "cycle: key $k missing in $j"
+    done
+    near "$(key "$j" pull_off_F)" -1.308996939e-6 1e-5 && ok || bad "cycle grips pull-off F ($arith): $j"
+    near "$(key "$j" pull_off_d)" -0.470407800461e-6 1e-5 && ok || bad "cycle grips pull-off d ($arith)"
+    [ "$(key "$j" events)" = 2 ] && ok || bad "cycle: contact + pull-off = 2 events: $j"
+    grep -q ',contact$' "$TMP/c.csv" && grep -q ',pull-off$' "$TMP/c.csv" && ok || bad "cycle event column"
+done
+j=$($MDR cycle $P --control load --path 0,3e-6,-3e-6 --steps-per-segment 1000 --w-adv 0.05 \
+    --springs 128 --arith f64 2>&1 >/dev/null) || bad "cycle load exit"
+near "$(key "$j" pull_off_F)" -2.35619449019e-6 1e-9 && ok || bad "cycle load pull-off: $j"
+j=$($MDR cycle $P --control machine --k-machine 1 --path 0,5e-6,-15e-6 --steps-per-segment 2000 \
+    --arith f64 2>&1 >/dev/null) || bad "cycle machine exit"
+[ "$(key "$j" pull_off_F)" != null ] && ok || bad "cycle machine pulls off: $j"
+# a tabulated tip: a paraboloid sampled in a CSV file is reproduced exactly
+awk 'BEGIN { print "r,f"; for (i = 0; i <= 60; i++) { r = 12e-6 * i / 60; printf "%.17g,%.17g\n", r, r * r / 20e-6 } }' >"$TMP/tip.csv"
+j=$($MDR cycle --profile table --file "$TMP/tip.csv" --E 1e6 --w 0.05 --control load \
+    --path 0,3e-6,-3e-6 --steps-per-segment 1000 --springs 512 --arith f64 2>&1 >/dev/null) ||
+    bad "cycle table exit"
+near "$(key "$j" pull_off_F)" -2.35619449019e-6 1e-9 && ok || bad "tabulated paraboloid pull-off: $j"
+$MDR table --profile table --file "$TMP/tip.csv" --springs 16 --name my_tip >"$TMP/t.c" || bad "table exit"
+grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad "table C output"
+[ "$(grep -c '^    {' "$TMP/t.c")" -eq 17 ] && ok || bad "table: 17 nodes for 16 springs"
+# outside the table: exit 1 with a message
+$MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>&1
+[ $? -eq 1 ] && ok || bad "cycle beyond the table exits 1"
+
 # bad arguments: exit 2, one line on stderr
 expect2() {
     local err
@@ -76,6 +113,24 @@ expect2 curve $P --a-max 1e-5
 expect2 curve $P --a-max 1e-5 --n 0
 expect2 stress $P --a 1e-6 --r 2e-6
 expect2 stress --profile cone --theta 0.5 --E 1 --w 1 --a 1 --r 0
+expect2 cycle $P --control grips --path 0,1e-6
+expect2 cycle $P --control grips --steps-per-segment 10
+expect2 cycle $P --path 0,1e-6 --steps-per-segment 10
+expect2 cycle $P --control grips --path 0,x --steps-per-segment 10
+expect2 cycle $P --control grips --path 1e-6 --steps-per-segment 10
+expect2 cycle $P --control grips --path 0,1e-6 --steps-per-segment 0
+expect2 cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --springs 1
+expect2 cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --springs 100000
+expect2 cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --w-adv 0.1
+expect2 cycle $P --control machine --path 0,1e-6 --steps-per-segment 10
+expect2 cycle $P --control machine --k-machine 0 --path 0,1e-6 --steps-per-segment 10
+expect2 cycle --profile table --E 1e6 --w 0.05 --control grips --path 0,1e-6 --steps-per-segment 10
+expect2 cycle --profile table --file /nonexistent --E 1e6 --w 0.05 --control grips --path 0,1 --steps-per-segment 1
+printf 'r,f\n0,0\n2e-6,1e-9\n1e-6,2e-9\n' >"$TMP/bad.csv"
+expect2 cycle --profile table --file "$TMP/bad.csv" --E 1e6 --w 0.05 --control grips --path 0,1e-9 --steps-per-segment 1
+expect2 table $P
+expect2 table --profile paraboloid --R 1e-5 --a-max 1e-6 --name 9lives
+expect2 eq --profile table --file "$TMP/tip.csv" --E 1 --w 1 --a 1
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -1,0 +1,153 @@
+/*
+ * bench_engine.c: cost per step of the spring engine against the number of
+ * springs N (make bench). All figures come from one run, so they can be
+ * compared with each other on a shared, noisy machine; absolute ns are not
+ * portable, the ratios are the claim.
+ *
+ * Scene: exact sphere R = 1 um, E* = 1 MPa, w = 0.05 J/m^2, w_adv = 0.02,
+ * table to 0.7 R. One step = one control tick of an approach-retract cycle
+ * under fixed grips (d from 0 to 0.1 um and back to -0.3 um, past the
+ * pull-off) of STEPS ticks; the edge moves on most ticks. Timed: the best of
+ * REPEAT runs of the cycle (the minimum is the least disturbed).
+ *
+ * Columns: ns per step of mdr_engine_step_d; its ratio to N = 64 (goal
+ * <= 1.2: the step cost does not grow with N); nodes the edge passes per
+ * step on average (the only N-dependent work: it is O(1) while that stays
+ * below ~1); ns per step of the naive O(N) alternative, the same step
+ * followed by the force summed directly over the attached springs (what
+ * the prefix sums G_i save); and naive / engine.
+ */
+#define _POSIX_C_SOURCE 199309L
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <time.h>
+
+#include "mdr.h"
+
+#define STEPS 20000
+#define REPEAT 7
+
+static mdr_node_f32 n32[4097];
+static mdr_node_f64 n64[4097];
+static volatile double sink;
+
+static double now_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+static double path(long i)
+{
+    /* 0 -> 0.1 um in STEPS/4 ticks, then down to -0.3 um */
+    long q = STEPS / 4;
+    return i <= q ? 0.1e-6 * (double)i / (double)q : 0.1e-6 - 0.4e-6 * (double)(i - q) / (double)(STEPS - q);
+}
+
+/* the naive O(N) force: sum over the attached springs (f32 table) */
+static float naive_F32(const mdr_table_f32 *t, float E, float a, float d)
+{
+    float sum = 0.0f, h = t->h;
+    long j, k = (long)(a / h);
+    if (k >= t->n) {
+        k = t->n - 1;
+    }
+    for (j = 0; j < k; j++) {
+        const mdr_node_f32 *p = &t->node[j];
+        sum += d * h - (0.5f * h * (p->g + p[1].g) + p->q);
+    }
+    return 2.0f * E * (sum + (a - h * (float)k) * (d - t->node[k].g));
+}
+
+static double naive_F64(const mdr_table_f64 *t, double E, double a, double d)
+{
+    double sum = 0.0, h = t->h;
+    long j, k = (long)(a / h);
+    if (k >= t->n) {
+        k = t->n - 1;
+    }
+    for (j = 0; j < k; j++) {
+        const mdr_node_f64 *p = &t->node[j];
+        sum += d * h - (0.5 * h * (p->g + p[1].g) + p->q);
+    }
+    return 2.0 * E * (sum + (a - h * (double)k) * (d - t->node[k].g));
+}
+
+#define BENCH(T, SFX, NODES, NAIVE)                                                               \
+    static void bench_##SFX(uint16_t n, double *ns, double *ns_naive, double *nodes_per_step)    \
+    {                                                                                             \
+        const T p[3] = {(T)1e-6, 0, 0};                                                           \
+        mdr_contact_##SFX c;                                                                      \
+        mdr_table_##SFX t;                                                                        \
+        mdr_engine_##SFX e;                                                                       \
+        mdr_step_##SFX o;                                                                         \
+        int r, naive;                                                                             \
+        long i, moved = 0;                                                                        \
+        mdr_contact_init_##SFX(&c, MDR_PROFILE_SPHERE, p, (T)1e6, (T)0.05);                       \
+        mdr_table_init_profile_##SFX(&t, NODES, n, &c, (T)0.7e-6);                                \
+        for (naive = 0; naive < 2; naive++) {                                                     \
+            double best = 1e300;                                                                  \
+            for (r = 0; r < REPEAT; r++) {                                                        \
+                double t0, t1, acc = 0;                                                           \
+                mdr_engine_init_##SFX(&e, &t, (T)1e6, (T)0.05, (T)0.02, 0);                       \
+                t0 = now_ns();                                                                    \
+                for (i = 1; i <= STEPS; i++) {                                                    \
+                    uint16_t k0 = e.k;                                                            \
+                    if (mdr_engine_step_d_##SFX(&e, (T)path(i), &o) != MDR_OK) {                  \
+                        fprintf(stderr, "bench: step failed\n");                                  \
+                        return;                                                                   \
+                    }                                                                             \
+                    acc += (double)o.F;                                                           \
+                    if (naive && e.contact) {                                                     \
+                        acc += (double)NAIVE(&t, e.E, e.a, e.d);                                  \
+                    }                                                                             \
+                    if (r == 0 && !naive) {                                                       \
+                        moved += e.k > k0 ? e.k - k0 : k0 - e.k;                                  \
+                    }                                                                             \
+                }                                                                                 \
+                t1 = now_ns();                                                                    \
+                sink = acc;                                                                       \
+                best = fmin(best, (t1 - t0) / STEPS);                                             \
+            }                                                                                     \
+            if (naive) {                                                                          \
+                *ns_naive = best;                                                                 \
+            } else {                                                                              \
+                *ns = best;                                                                       \
+            }                                                                                     \
+        }                                                                                         \
+        *nodes_per_step = (double)moved / STEPS;                                                  \
+    }
+
+BENCH(float, f32, n32, naive_F32)
+BENCH(double, f64, n64, naive_F64)
+
+int main(void)
+{
+    int a;
+    printf("engine step cost vs springs N (sphere, fixed grips, %d-tick approach-retract cycle, "
+           "best of %d)\n", STEPS, REPEAT);
+    for (a = 0; a < 2; a++) {
+        double base = 0, worst = 0;
+        uint16_t n;
+        printf("%s\n     N   ns/step  ratio-to-64  nodes/step   naive-ns  naive/engine\n",
+               a ? "f64" : "f32");
+        for (n = 64; n <= 4096; n = (uint16_t)(n * 2)) {
+            double ns = 0, nn = 0, mv = 0;
+            if (a) {
+                bench_f64(n, &ns, &nn, &mv);
+            } else {
+                bench_f32(n, &ns, &nn, &mv);
+            }
+            if (n == 64) {
+                base = ns;
+            }
+            worst = fmax(worst, ns / base);
+            printf("  %5u  %8.1f  %11.2f  %10.3f  %9.1f  %12.1f\n", (unsigned)n, ns, ns / base, mv,
+                   nn, nn / ns);
+        }
+        printf("  largest ratio to N = 64: %.2f (goal <= 1.2)\n", worst);
+    }
+    return 0;
+}
