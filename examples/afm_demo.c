@@ -32,6 +32,11 @@ struct substrate {
     double E, nu, w; /* Young's modulus [Pa], Poisson ratio, work of adhesion [J/m^2] */
 };
 
+static const struct substrate subs[2] = {
+    {"PDMS", 2.0e6, 0.5, 0.045},
+    {"polystyrene", 3.4e9, 0.34, 0.066},
+};
+
 static const double R_TIP = 20e-9, E_TIP = 250e9, NU_TIP = 0.23, K_CANTILEVER = 0.2;
 
 /* 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 */
@@ -40,25 +45,33 @@ static double e_star(const struct substrate *s)
     return 1.0 / ((1 - s->nu * s->nu) / s->E + (1 - NU_TIP * NU_TIP) / E_TIP);
 }
 
+/* OUTDIR/name opened for writing with its CSV header, or NULL (reported). */
+static FILE *open_csv(const char *outdir, const char *name, const char *header, char *path,
+                      size_t len)
+{
+    FILE *f;
+    snprintf(path, len, "%s/%s", outdir, name);
+    f = fopen(path, "w");
+    if (f == NULL) {
+        perror(path);
+        return NULL;
+    }
+    fprintf(f, "%s\n", header);
+    return f;
+}
+
 /* One force-spectroscopy cycle per substrate with the real-time engine. */
 static int engine_cycles(const char *outdir)
 {
-    static const struct substrate subs[2] = {
-        {"PDMS", 2.0e6, 0.5, 0.045},
-        {"polystyrene", 3.4e9, 0.34, 0.066},
-    };
     static mdr_node_f32 nodes[MDR_TABLE_NODES(512)];
     const float triggers[2] = {1e-9f, 5e-9f}, dz = 0.01e-9f;
     char path[512];
     FILE *csv;
     int i;
-    snprintf(path, sizeof path, "%s/afm_cycle.csv", outdir);
-    csv = fopen(path, "w");
+    csv = open_csv(outdir, "afm_cycle.csv", "substrate,tick,z,d,F,a,event", path, sizeof path);
     if (csv == NULL) {
-        perror(path);
         return 1;
     }
-    fprintf(csv, "substrate,tick,z,d,F,a,event\n");
     printf("\nreal-time cycle through the cantilever (spring engine, 512 springs to 0.995 R, f32, "
            "w_adv = w/2, %.2f nm ticks)\n", (double)dz * 1e9);
     for (i = 0; i < 2; i++) {
@@ -121,10 +134,6 @@ static int engine_cycles(const char *outdir)
 
 int main(int argc, char **argv)
 {
-    static const struct substrate subs[2] = {
-        {"PDMS", 2.0e6, 0.5, 0.045},
-        {"polystyrene", 3.4e9, 0.34, 0.066},
-    };
     static const char *ctl_name[4] = {"", "fixed load", "fixed grips", "cantilever"};
     const char *outdir = argc > 1 ? argv[1] : "build/demo";
     char path[512];
@@ -175,13 +184,10 @@ int main(int argc, char **argv)
     }
 
     /* equilibrium curve of the exact sphere, both substrates, normalised */
-    snprintf(path, sizeof path, "%s/afm_fd.csv", outdir);
-    csv = fopen(path, "w");
+    csv = open_csv(outdir, "afm_fd.csv", "substrate,a,d,F,d_norm,F_norm", path, sizeof path);
     if (csv == NULL) {
-        perror(path);
         return 1;
     }
-    fprintf(csv, "substrate,a,d,F,d_norm,F_norm\n");
     for (i = 0; i < 2; i++) {
         const struct substrate *s = &subs[i];
         double Es = e_star(s), dn = cbrt(M_PI * M_PI * s->w * s->w * R_TIP / (Es * Es));

@@ -24,6 +24,7 @@
 #include <time.h>
 
 #include "mdr.h"
+#include "naive_sum.h"
 
 #define STEPS 20000
 #define REPEAT 7
@@ -44,35 +45,6 @@ static double path(long i)
     /* 0 -> 0.1 um in STEPS/4 ticks, then down to -0.3 um */
     long q = STEPS / 4;
     return i <= q ? 0.1e-6 * (double)i / (double)q : 0.1e-6 - 0.4e-6 * (double)(i - q) / (double)(STEPS - q);
-}
-
-/* the naive O(N) force: sum over the attached springs (f32 table) */
-static float naive_F32(const mdr_table_f32 *t, float E, float a, float d)
-{
-    float sum = 0.0f, h = t->h;
-    long j, k = (long)(a / h);
-    if (k >= t->n) {
-        k = t->n - 1;
-    }
-    for (j = 0; j < k; j++) {
-        const mdr_node_f32 *p = &t->node[j];
-        sum += d * h - (0.5f * h * (p->g + p[1].g) + p->q);
-    }
-    return 2.0f * E * (sum + (a - h * (float)k) * (d - t->node[k].g));
-}
-
-static double naive_F64(const mdr_table_f64 *t, double E, double a, double d)
-{
-    double sum = 0.0, h = t->h;
-    long j, k = (long)(a / h);
-    if (k >= t->n) {
-        k = t->n - 1;
-    }
-    for (j = 0; j < k; j++) {
-        const mdr_node_f64 *p = &t->node[j];
-        sum += d * h - (0.5 * h * (p->g + p[1].g) + p->q);
-    }
-    return 2.0 * E * (sum + (a - h * (double)k) * (d - t->node[k].g));
 }
 
 #define BENCH(T, SFX, NODES, NAIVE)                                                               \
@@ -120,8 +92,8 @@ static double naive_F64(const mdr_table_f64 *t, double E, double a, double d)
         *nodes_per_step = (double)moved / STEPS;                                                  \
     }
 
-BENCH(float, f32, n32, naive_F32)
-BENCH(double, f64, n64, naive_F64)
+BENCH(float, f32, n32, naive_F_f32)
+BENCH(double, f64, n64, naive_F_f64)
 
 int main(void)
 {

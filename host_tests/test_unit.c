@@ -24,6 +24,7 @@
 #include <cmocka.h>
 
 #include "mdr.h"
+#include "test_util.h"
 
 #define REL64 1e-12 /* expectations from closed forms, evaluated in double */
 #define REL_CV 1e-11 /* expectations from CHECK_VALUES tables (12 digits: +-5e-12) */
@@ -40,16 +41,6 @@ float mdr_m_atanh_m_f32(float);
 void mdr_m_sincos_f32(float, float *, float *);
 void mdr_m_struve01_f64(double, double, double *, double *, double *, double *);
 void mdr_m_struve01_f32(float, float, float *, float *, float *, float *);
-
-static void rel_le(double got, double want, double scale, double tol, const char *what)
-{
-    double s = scale > 0 ? scale : fabs(want);
-    if (!(fabs(got - want) <= tol * s)) {
-        print_error("%s: got %.17g want %.17g rel %.3g > %.3g\n", what, got, want,
-                    fabs(got - want) / s, tol);
-        fail();
-    }
-}
 
 /* ---------------------------------------------------------------- math */
 

@@ -31,8 +31,10 @@ static void MDR_SFX(mdr_e_kahan)(MDR_T *s, MDR_T *cmp, MDR_T v)
 }
 
 /* Prefix sums G_i and the square roots t_i of a table whose g_i and q_i are
- * set: G_{i+1} = G_i + h (g_i + g_{i+1})/2 + q_i, compensated. */
-static void MDR_SFX(mdr_e_finish)(MDR_SFX(mdr_node) *node, uint16_t n, MDR_T h)
+ * set: G_{i+1} = G_i + h (g_i + g_{i+1})/2 + q_i, compensated; then the
+ * header is filled (only now: a failed build leaves it untouched). */
+static mdr_status MDR_SFX(mdr_e_finish)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
+                                        uint16_t n, MDR_T h, bool wall)
 {
     MDR_T s = MDR_K(0.0), cmp = MDR_K(0.0);
     uint16_t i;
@@ -44,6 +46,11 @@ static void MDR_SFX(mdr_e_finish)(MDR_SFX(mdr_node) *node, uint16_t n, MDR_T h)
         node[i + 1].G = s;
         node[i + 1].t = MDR_SQRT(h * (MDR_T)(i + 1));
     }
+    tab->node = node;
+    tab->h = h;
+    tab->n = n;
+    tab->wall = (uint8_t)wall;
+    return MDR_OK;
 }
 
 static bool MDR_SFX(mdr_e_size_ok)(uint16_t n)
@@ -51,17 +58,24 @@ static bool MDR_SFX(mdr_e_size_ok)(uint16_t n)
     return n >= MDR_SPRINGS_MIN && n <= MDR_SPRINGS_MAX;
 }
 
+/* The checks every table builder starts with: pointers, then N. */
+static mdr_status MDR_SFX(mdr_e_args)(const void *tab, const void *node, const void *src,
+                                      uint16_t n)
+{
+    if (tab == NULL || node == NULL || src == NULL) {
+        return MDR_E_NULL;
+    }
+    return MDR_SFX(mdr_e_size_ok)(n) ? MDR_OK : MDR_E_SIZE;
+}
+
 mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                            uint16_t n, const MDR_SFX(mdr_contact) *c, MDR_T x_max)
 {
     MDR_T h;
     uint16_t i;
-    mdr_status st;
-    if (tab == NULL || node == NULL || c == NULL) {
-        return MDR_E_NULL;
-    }
-    if (!MDR_SFX(mdr_e_size_ok)(n)) {
-        return MDR_E_SIZE;
+    mdr_status st = MDR_SFX(mdr_e_args)(tab, node, c, n);
+    if (st != MDR_OK) {
+        return st;
     }
     if (!MDR_SFX(mdr_m_isfinite)(x_max)) {
         return MDR_E_NONFINITE;
@@ -93,12 +107,8 @@ mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_
         /* 2-point Gauss-Legendre minus the trapezoid: error O(h^5 g'''') */
         node[i].q = MDR_K(0.5) * h * ((ga + gb) - (node[i].g + node[i + 1].g));
     }
-    MDR_SFX(mdr_e_finish)(node, n, h);
-    tab->node = node;
-    tab->h = h;
-    tab->n = n;
-    tab->wall = (uint8_t)(c->kind == MDR_PROFILE_FLATPUNCH && x_max == c->p[0]);
-    return MDR_OK;
+    return MDR_SFX(mdr_e_finish)(tab, node, n, h,
+                                 c->kind == MDR_PROFILE_FLATPUNCH && x_max == c->p[0]);
 }
 
 /* Slope (f_{j+1} - f_j)/(r_{j+1} - r_j) of sample interval j. */
@@ -150,11 +160,9 @@ mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node
 {
     MDR_T h;
     uint16_t i;
-    if (tab == NULL || node == NULL || r == NULL || f == NULL) {
-        return MDR_E_NULL;
-    }
-    if (!MDR_SFX(mdr_e_size_ok)(n)) {
-        return MDR_E_SIZE;
+    mdr_status st = MDR_SFX(mdr_e_args)(tab, node, r, n);
+    if (st != MDR_OK || f == NULL) {
+        return st != MDR_OK ? st : MDR_E_NULL;
     }
     if (m < MDR_TABLE_MIN_POINTS) {
         return MDR_E_TABLE;
@@ -186,23 +194,16 @@ mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node
         MDR_T gb = MDR_SFX(mdr_e_abel)(r, f, m, x0 + MDR_GAUSS2_B * h);
         node[i].q = MDR_K(0.5) * h * ((ga + gb) - (node[i].g + node[i + 1].g));
     }
-    MDR_SFX(mdr_e_finish)(node, n, h);
-    tab->node = node;
-    tab->h = h;
-    tab->n = n;
-    tab->wall = 0;
-    return MDR_OK;
+    return MDR_SFX(mdr_e_finish)(tab, node, n, h, false);
 }
 
 mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                      uint16_t n, MDR_T h, const MDR_T *g)
 {
     uint16_t i;
-    if (tab == NULL || node == NULL || g == NULL) {
-        return MDR_E_NULL;
-    }
-    if (!MDR_SFX(mdr_e_size_ok)(n)) {
-        return MDR_E_SIZE;
+    mdr_status st = MDR_SFX(mdr_e_args)(tab, node, g, n);
+    if (st != MDR_OK) {
+        return st;
     }
     if (!MDR_SFX(mdr_m_isfinite)(h)) {
         return MDR_E_NONFINITE;
@@ -222,12 +223,7 @@ mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) 
         node[i].g = g[i];
         node[i].q = MDR_K(0.0);
     }
-    MDR_SFX(mdr_e_finish)(node, n, h);
-    tab->node = node;
-    tab->h = h;
-    tab->n = n;
-    tab->wall = 0;
-    return MDR_OK;
+    return MDR_SFX(mdr_e_finish)(tab, node, n, h, false);
 }
 
 /* ---------------------------------------------------------------- engine */
