@@ -391,11 +391,38 @@ static void energy_jkr_cycle(void **st)
     want = Wl + Wu;
     rel_le(e.dissipated, want, 0, TOL_ENERGY, "dissipated energy of a JKR grips cycle");
     rel_le(e.last_cycle, want, 0, TOL_ENERGY, "last cycle energy");
-    /* a second identical cycle dissipates the same */
-    run64(&e, MDR_CONTROL_GRIPS, -dmax, dmax, 20000, &o, NULL);
+    /* touching again is a re-contact; a second identical cycle dissipates the same */
+    assert_int_equal(mdr_engine_step_d_f64(&e, 1e-12, &o), MDR_OK);
+    assert_int_equal(o.event, MDR_EV_RECONTACT);
+    run64(&e, MDR_CONTROL_GRIPS, 1e-12, dmax, 20000, &o, NULL);
     run64(&e, MDR_CONTROL_GRIPS, dmax, -dmax, 20000, &o, NULL);
     assert_int_equal(e.cycles, 2);
     rel_le(e.last_cycle, want, 0, TOL_ENERGY, "second cycle energy");
+}
+
+/* Without adhesion the contact peels smoothly to a = 0 (event SEPARATION,
+ * no pull-off) and a cycle dissipates nothing: Hertz is elastic. Tolerance:
+ * 1e-6 of the loading work (trapezoid rule over 20000 ticks). */
+static void non_adhesive_cycle(void **st)
+{
+    const double pd[3] = {JR, 0, 0};
+    mdr_table_f64 t64;
+    mdr_engine_f64 e;
+    mdr_step_f64 o;
+    long i, seps = 0;
+    double Wl = 4.0 / 3.0 * JE * sqrt(JR) * pow(0.5e-6, 2.5) / 2.5;
+    (void)st;
+    table64(&t64, MDR_PROFILE_PARABOLOID, pd, 256, 12e-6);
+    assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, 0.0, 0.0, 0), MDR_OK);
+    for (i = 1; i <= 40000; i++) {
+        double d = i <= 20000 ? 0.5e-6 * i / 20000.0 : 0.5e-6 - 0.6e-6 * (i - 20000) / 20000.0;
+        assert_int_equal(mdr_engine_step_d_f64(&e, d, &o), MDR_OK);
+        assert_true(o.event != MDR_EV_PULL_OFF && o.event != MDR_EV_JUMP);
+        seps += o.event == MDR_EV_SEPARATION;
+    }
+    assert_int_equal(seps, 1);
+    assert_int_equal(e.cycles, 1);
+    rel_le(e.dissipated, 0.0, Wl, TOL_ENERGY, "Hertz cycle dissipates nothing");
 }
 
 /* ------------------------------------------------------ wavy (seed 4.54) */
@@ -690,6 +717,7 @@ int main(void)
         cmocka_unit_test(retraction_is_equilibrium),
         cmocka_unit_test(oracle_cycles),
         cmocka_unit_test(energy_jkr_cycle),
+        cmocka_unit_test(non_adhesive_cycle),
         cmocka_unit_test(wavy_seed_fig_4_9),
         cmocka_unit_test(flat_punch_wall),
         cmocka_unit_test(gap_table_exact_for_quadratic),
