@@ -237,7 +237,6 @@ static int CLI_SFX(run)(const struct cli_args *A)
     if (A->cmd == CMD_TABLE) {
         return CLI_SFX(table_cmd)(A);
     }
-    {
     CLI_T p[3] = {(CLI_T)A->p[0], (CLI_T)A->p[1], (CLI_T)A->p[2]};
     mdr_status st = CLI_SFX(mdr_contact_init)(&c, A->kind, p, (CLI_T)A->E, (CLI_T)A->w);
     if (st != MDR_OK) {
@@ -311,5 +310,4 @@ static int CLI_SFX(run)(const struct cli_args *A)
         printf("{\"sigma\": " CLI_FMT "}\n", (double)sg);
         return 0;
     }
-}
 }

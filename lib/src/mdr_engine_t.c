@@ -488,6 +488,13 @@ static void MDR_SFX(mdr_e_state)(const MDR_SFX(mdr_e_branch) *b, MDR_T E, MDR_T 
     *F = b->al == MDR_K(0.0) ? MDR_K(2.0) * E * u : MDR_K(2.0) * E * (p->x * *d - p->G);
 }
 
+/* A refused step: set the sticky flag, leave the state, return the status. */
+static mdr_status MDR_SFX(mdr_e_refuse)(MDR_SFX(mdr_engine) *e, uint8_t flag, mdr_status st)
+{
+    e->flags |= flag;
+    return st;
+}
+
 /* One step with the control u on the branch family (al, ka). */
 static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka, MDR_T u,
                                       MDR_SFX(mdr_step) *out)
@@ -505,9 +512,6 @@ static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka
     b.tab = tab;
     b.al = al;
     b.ka = ka;
-    b.ih = MDR_K(1.0) / tab->h;
-    b.b6 = MDR_K(6.0) * b.ih * b.ih * b.ih;
-    b.c = s.c_w;
     p.t = s.t;
     p.x = s.a;
     p.g = s.g;
@@ -517,36 +521,36 @@ static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka
     o.event = MDR_EV_NONE;
     o.jumps = 0;
 
-    if (s.contact) {
-        MDR_T dpin = (u + ka * p.G) / (al + ka * p.x);
-        if (dpin > p.g - s.c_adv * p.t) {
+    if (s.contact) { /* the pinned state; kept if the edge stays */
+        MDR_SFX(mdr_e_state)(&b, s.E, u, &p, &d, &F);
+        if (d > p.g - s.c_adv * p.t) {
             dir = 1;
-        } else if (dpin < p.g - s.c_w * p.t) {
+        } else if (d < p.g - s.c_w * p.t) {
             dir = -1;
         }
     } else if (u > MDR_K(0.0)) {
         dir = 1; /* U(0) = 0 on every branch */
         dprev = Fprev = MDR_K(0.0); /* the touch point */
     }
-    b.c = dir > 0 ? s.c_adv : s.c_w;
-    if (dir != 0) {
-        p = MDR_SFX(mdr_e_at)(&b, s.k, s.t); /* with g' for the fold test */
+    if (dir != 0) { /* the edge moves: interpolation constants, g' for the fold test */
+        b.c = dir > 0 ? s.c_adv : s.c_w;
+        b.ih = MDR_K(1.0) / tab->h;
+        b.b6 = MDR_K(6.0) * b.ih * b.ih * b.ih;
+        p = MDR_SFX(mdr_e_at)(&b, s.k, s.t);
     }
     for (iter = 0; dir != 0; iter++) {
         MDR_SFX(mdr_e_pt) pf, pl;
         MDR_T uf, df, Ff, dl, Fl;
         int r;
         if (iter > (unsigned)tab->n + 1u) {
-            e->flags |= MDR_FLAG_NOCONV;
-            return MDR_E_NOCONV;
+            return MDR_SFX(mdr_e_refuse)(e, MDR_FLAG_NOCONV, MDR_E_NOCONV);
         }
         if (dir > 0 && s.contact && tab->wall && p.k == tab->n - 1 && p.t >= tab->node[tab->n].t) {
             break; /* held at the wall */
         }
         r = MDR_SFX(mdr_e_scan)(&b, dir, u, true, &p, &pf);
         if (r == MDR_E_SCAN_NOCONV) {
-            e->flags |= MDR_FLAG_NOCONV;
-            return MDR_E_NOCONV;
+            return MDR_SFX(mdr_e_refuse)(e, MDR_FLAG_NOCONV, MDR_E_NOCONV);
         }
         if (r == MDR_E_SCAN_ROOT) {
             p = pf;
@@ -556,8 +560,7 @@ static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka
         if (r == MDR_E_SCAN_END) {
             if (dir > 0) {
                 if (!tab->wall) {
-                    e->flags |= MDR_FLAG_OUTSIDE;
-                    return MDR_E_OUTSIDE;
+                    return MDR_SFX(mdr_e_refuse)(e, MDR_FLAG_OUTSIDE, MDR_E_OUTSIDE);
                 }
                 p = MDR_SFX(mdr_e_node)(&b, tab->n);
                 s.contact = 1;
@@ -583,8 +586,7 @@ static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka
         }
         r = MDR_SFX(mdr_e_scan)(&b, dir, uf, false, &pf, &pl);
         if (r == MDR_E_SCAN_NOCONV) {
-            e->flags |= MDR_FLAG_NOCONV;
-            return MDR_E_NOCONV;
+            return MDR_SFX(mdr_e_refuse)(e, MDR_FLAG_NOCONV, MDR_E_NOCONV);
         }
         if (r == MDR_E_SCAN_END && dir < 0) {
             /* pull-off: every spring lets go at (df, Ff); the contact
@@ -602,8 +604,7 @@ static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka
         }
         if (r == MDR_E_SCAN_END) {
             if (!tab->wall) {
-                e->flags |= MDR_FLAG_OUTSIDE;
-                return MDR_E_OUTSIDE;
+                return MDR_SFX(mdr_e_refuse)(e, MDR_FLAG_OUTSIDE, MDR_E_OUTSIDE);
             }
             pl = MDR_SFX(mdr_e_node)(&b, tab->n);
         }
@@ -620,7 +621,9 @@ static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka
     }
 
     if (s.contact) {
-        MDR_SFX(mdr_e_state)(&b, s.E, u, &p, &d, &F);
+        if (dir != 0) {
+            MDR_SFX(mdr_e_state)(&b, s.E, u, &p, &d, &F);
+        }
         s.a = p.x;
         s.t = p.t;
         s.g = p.g;
