@@ -9,3 +9,4 @@
 #include "mdr_math_t.c"
 #include "mdr_contact_t.c"
 #include "mdr_engine_t.c"
+#include "mdr_q31init_t.c"
