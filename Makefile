@@ -31,7 +31,7 @@ LIB_SRC := lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_sta
 LIB_DEPS := $(wildcard lib/include/*.h lib/src/*.h lib/src/*.c port/host/*.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
@@ -89,7 +89,10 @@ host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
 	@for t in $(TESTS); do echo "== $$t"; ./$(B)/host/$$t || exit 1; done
 	@echo "== cli"; bash host_tests/test_cli.sh $(B)/host/mdr
 
-SAN_TESTS := test_unit test_vectors test_engine
+$(B)/san/test_q31: host_tests/test_q31.c $(REF_SRC) ref/mdr_ref.h $(B)/san/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(REF_SRC) $(B)/san/libmdr.a -lcmocka $(GSL_LIBS) -o $@
+
+SAN_TESTS := test_unit test_vectors test_engine test_q31
 san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 	@for t in $(SAN_TESTS); do echo "== sanitized $$t"; ./$(B)/san/$$t || exit 1; done
 
@@ -100,8 +103,25 @@ san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 test: deps
 	$(MAKE) --no-print-directory host-tests
 	$(MAKE) --no-print-directory san-tests
+	$(MAKE) --no-print-directory q31-exact
 	$(MAKE) --no-print-directory cross
-	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) $(CROSS_CFGS)) passed, 0 failed"
+	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) q31-exact $(CROSS_CFGS)) passed, 0 failed"
+
+# The q31 step is integer arithmetic: the same inputs must give the same
+# outputs whatever the compiler and optimisation level (a difference means
+# undefined or implementation-defined behaviour). One fingerprint per build.
+EXACT_BUILDS := gcc:-O0 gcc:-O2 gcc:-O3 clang:-O0 clang:-O2 clang:-Os
+q31-exact:
+	@mkdir -p $(B)/exact
+	@set -e; ref=""; for b in $(EXACT_BUILDS); do \
+	  cc=$${b%%:*}; opt=$${b#*:}; out=$(B)/exact/q31_trace_$$cc$$opt; \
+	  $$cc -std=c99 -ffreestanding -fno-math-errno $(WARN) -Ilib/include -Iport/host $$opt \
+	    lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c -c; \
+	  mv mdr_f32.o mdr_f64.o mdr_q31.o mdr_status.o $(B)/exact/; \
+	  $$cc -std=c99 $(WARN) -Ilib/include $$opt host_tests/q31_trace.c $(B)/exact/mdr_*.o -o $$out; \
+	  r=$$(./$$out); echo "$$cc $$opt: $$r"; \
+	  if [ -z "$$ref" ]; then ref="$$r"; elif [ "$$r" != "$$ref" ]; then echo "q31 outputs differ between builds"; exit 1; fi; \
+	done; echo "q31-exact: $(words $(EXACT_BUILDS)) builds, identical outputs"
 
 # engine step cost against N and against the naive O(N) force sum (one run)
 $(B)/host/bench_engine: host_tests/bench_engine.c $(B)/host/libmdr.a
@@ -147,14 +167,18 @@ CROSS_CFGS := m4f m0 rv32imafc rv32imac
 # undefined symbols allowed in lib/ objects: the two mem* functions GCC may
 # call, and libgcc helpers (checked separately for double precision)
 ALLOW_RE := ^(memcpy|memset|__aeabi_[a-z0-9]+|__gnu_thumb1_case_[a-z0-9]+|__[a-z]+sf[0-9]|__float(un)?sisf|__fix(uns)?sfsi|__[a-z]+[sd]i[0-9]|__clz[sd]i2)$$
+# any floating-point helper (soft float, single or double): none may appear
+# in the q31 step (lib/src/mdr_q31.c), which is integer arithmetic only
+FLOAT_RE := ^(__aeabi_([fd][a-z0-9]+|[a-z0-9]*2[fd][a-z]*)|__[a-z]+[sd]f[0-9]?|__[a-z]+[sd]f[a-z0-9]*)$$
 DOUBLE_RE := ^(__aeabi_(d[a-z0-9]+|[a-z0-9]*2d[a-z]*)|__[a-z]+df[0-9]?|__[a-z]+df[a-z0-9]*)$$
 
 define cross_rules
 $(B)/$(1)/libmdr.a: $(LIB_DEPS) port/link_check.c
 	@mkdir -p $(B)/$(1)
 	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -c lib/src/mdr_f32.c -o $(B)/$(1)/mdr_f32.o
+	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -c lib/src/mdr_q31.c -o $(B)/$(1)/mdr_q31.o
 	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -c lib/src/mdr_status.c -o $(B)/$(1)/mdr_status.o
-	rm -f $$@ && $(if $(filter rv%,$(1)),$(RV)ar,$(ARM)ar) rcs $$@ $(B)/$(1)/mdr_f32.o $(B)/$(1)/mdr_status.o
+	rm -f $$@ && $(if $(filter rv%,$(1)),$(RV)ar,$(ARM)ar) rcs $$@ $(B)/$(1)/mdr_f32.o $(B)/$(1)/mdr_q31.o $(B)/$(1)/mdr_status.o
 $(B)/$(1)/link_check.elf: $(B)/$(1)/libmdr.a
 	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -nostdlib -Wl,--gc-sections -Wl,-e,link_check_entry \
 	  port/link_check.c $(B)/$(1)/libmdr.a -lgcc -o $$@
@@ -164,12 +188,14 @@ $(foreach c,$(CROSS_CFGS),$(eval $(call cross_rules,$(c))))
 cross: $(foreach c,$(CROSS_CFGS),$(B)/$(c)/link_check.elf)
 	@set -e; for c in $(CROSS_CFGS); do \
 	  nmtool=$$(case $$c in rv*) echo $(RV)nm;; *) echo $(ARM)nm;; esac); \
-	  und=$$($$nmtool -u $(B)/$$c/mdr_f32.o $(B)/$$c/mdr_status.o | awk 'NF==2{print $$2}' | sort -u); \
+	  und=$$($$nmtool -u $(B)/$$c/mdr_f32.o $(B)/$$c/mdr_q31.o $(B)/$$c/mdr_status.o | awk 'NF==2{print $$2}' | sort -u); \
 	  bad=$$(printf '%s\n' $$und | grep -Ev '$(ALLOW_RE)' | grep -v '^$$' || true); \
 	  if [ -n "$$bad" ]; then echo "cross $$c: undefined symbols outside the allow-list: $$bad"; exit 1; fi; \
 	  dbl=$$($$nmtool $(B)/$$c/link_check.elf | awk '{print $$NF}' | grep -E '$(DOUBLE_RE)' || true); \
 	  if [ -n "$$dbl" ]; then echo "cross $$c: double-precision helpers in an f32 build: $$dbl"; exit 1; fi; \
-	  echo "cross $$c: ok (undefined in lib: $$(printf '%s ' $$und))"; \
+	  qf=$$($$nmtool -u $(B)/$$c/mdr_q31.o | awk 'NF==2{print $$2}' | grep -E '$(FLOAT_RE)' || true); \
+	  if [ -n "$$qf" ]; then echo "cross $$c: float helpers in the q31 step: $$qf"; exit 1; fi; \
+	  echo "cross $$c: ok (undefined in lib: $$(printf '%s ' $$und); q31 step: $$($$nmtool -u $(B)/$$c/mdr_q31.o | awk 'NF==2{printf "%s ", $$2}'))"; \
 	done
 
 size: cross
@@ -181,7 +207,7 @@ size: cross
 	done
 
 # ---- dependencies --------------------------------------------------------------
-DEB_PKGS := gcc make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
+DEB_PKGS := gcc clang make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
 deps:
 	@missing=""; \
 	for p in $(DEB_PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \

@@ -73,5 +73,20 @@ void link_check_entry(void)
             mdr_link_sink = st.F + (float)mdr_engine_clear_flags_f32(&en);
         }
         (void)mdr_event_str(MDR_EV_NONE);
+        {
+            /* the q31 engine: table conversion, float init, integer steps */
+            static mdr_node_q31 qn[MDR_TABLE_NODES(16)];
+            mdr_table_q31 tq;
+            mdr_engine_q31 eq;
+            mdr_step_q31 sq;
+            if (mdr_table_q31_from_f32(&tq, qn, &t) == MDR_OK &&
+                mdr_engine_init_q31_f32(&eq, &tq, 1e9f, 0.1f, 0.05f, 1.0f) == MDR_OK) {
+                (void)mdr_engine_step_d_q31(&eq, mdr_q31_in(&eq, MDR_Q_D, 1e-9f), &sq);
+                (void)mdr_engine_step_F_q31(&eq, 1, &sq);
+                (void)mdr_engine_step_z_q31(&eq, 1, &sq);
+                mdr_link_sink = mdr_q31_out(&eq, MDR_Q_F, sq.F) + mdr_q31_energy(&eq, eq.work) +
+                                (float)mdr_engine_clear_flags_q31(&eq);
+            }
+        }
     }
 }

@@ -5,25 +5,22 @@
  * The step (integer only) is lib/src/mdr_q31.c.
  */
 
-/* v rounded to nearest (ties away from zero); |v| < 2^62 */
-static int64_t MDR_SFX(mdr_q_round)(MDR_T v)
+/* v rounded to nearest (ties away from zero); |v| <= 2^31 - 2^8 (int32
+ * conversions only: a float -> int64 conversion would call a double
+ * helper on some cores) */
+static int32_t MDR_SFX(mdr_q_round)(MDR_T v)
 {
-    return v >= MDR_K(0.0) ? (int64_t)(v + MDR_K(0.5)) : -(int64_t)(MDR_K(0.5) - v);
+    return v >= MDR_K(0.0) ? (int32_t)(v + MDR_K(0.5)) : -(int32_t)(MDR_K(0.5) - v);
 }
 
-/* v * 2^f as Q(31-f).f, or false when |v| >= 2^(31-f) */
+/* v * f as Q(31-f).f (f = 2^bits), or false when it does not fit */
 static bool MDR_SFX(mdr_q_fmt)(MDR_T v, MDR_T f, int32_t *out)
 {
     MDR_T s = v * f;
-    int64_t r;
-    if (!(s > MDR_K(-2147483648.0) && s < MDR_K(2147483648.0))) {
+    if (!(s > MDR_K(-2147483520.0) && s < MDR_K(2147483520.0))) {
         return false;
     }
-    r = MDR_SFX(mdr_q_round)(s);
-    if (r > INT32_MAX || r < INT32_MIN) {
-        return false;
-    }
-    *out = (int32_t)r;
+    *out = MDR_SFX(mdr_q_round)(s);
     return true;
 }
 
@@ -159,8 +156,8 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     z.D0 = (float)D0;
     z.F0 = (float)(MDR_K(2.0) * E * L * D0);
     z.sh = (uint8_t)(k + 1u);
-    z.c_w = (int32_t)MDR_SFX(mdr_q_round)(cw / D0 * Q29);
-    z.c_adv = (int32_t)MDR_SFX(mdr_q_round)(ca / D0 * Q29);
+    z.c_w = MDR_SFX(mdr_q_round)(cw / D0 * Q29);
+    z.c_adv = MDR_SFX(mdr_q_round)(ca / D0 * Q29);
     z.machine = k_m > MDR_K(0.0);
     z.sz = 0;
     z.al_z = MDR_Q30_ONE;
@@ -172,15 +169,15 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
         if (!MDR_SFX(mdr_m_isfinite)(kap) || kap > MDR_K(65536.0)) {
             return MDR_E_CONTROL;
         }
-        z.al_z = (int32_t)MDR_SFX(mdr_q_round)(Q30 / (MDR_K(1.0) + kap));
+        z.al_z = MDR_SFX(mdr_q_round)(Q30 / (MDR_K(1.0) + kap));
         z.ka_z = MDR_Q30_ONE - z.al_z;
         sc = MDR_K(1.0);
         while (sc * MDR_K(2.0) <= MDR_K(1.0) + kap) {
             sc *= MDR_K(2.0);
             z.sz++;
         }
-        z.z_in = (int32_t)MDR_SFX(mdr_q_round)(Q30 * (sc / (MDR_K(1.0) + kap)));
-        z.z_k = (int32_t)MDR_SFX(mdr_q_round)(Q30 * (kap / sc));
+        z.z_in = MDR_SFX(mdr_q_round)(Q30 * (sc / (MDR_K(1.0) + kap)));
+        z.z_k = MDR_SFX(mdr_q_round)(Q30 * (kap / sc));
     }
     z.Z0 = z.D0 * (float)(1ul << z.sz);
     z.a = z.t = z.g = z.Ga = z.d = z.F = 0;
@@ -223,7 +220,7 @@ int32_t mdr_q31_in(const mdr_engine_q31 *e, uint8_t q, float v)
     if (!(s > -2147483648.0f)) {
         return INT32_MIN;
     }
-    return (int32_t)mdr_q_round_f32(s);
+    return mdr_q_round_f32(s);
 }
 
 float mdr_q31_out(const mdr_engine_q31 *e, uint8_t q, int32_t v)
@@ -233,7 +230,13 @@ float mdr_q31_out(const mdr_engine_q31 *e, uint8_t q, int32_t v)
 
 float mdr_q31_energy(const mdr_engine_q31 *e, int64_t v)
 {
-    /* W0 2^-48, in two steps to stay inside float range for tiny units */
-    return e == NULL ? 0.0f : (float)v * (e->F0 / 16777216.0f) * (e->D0 / 16777216.0f);
+    /* W0 2^-48; the int64 is first reduced to int32 range (a float -> int64
+     * conversion would pull a double helper into soft-float builds) */
+    float scale = (e == NULL ? 0.0f : e->F0 / 16777216.0f) * (e == NULL ? 0.0f : e->D0 / 16777216.0f);
+    while (v >= 2147483648 || v <= -2147483648) {
+        v /= 2;
+        scale *= 2.0f;
+    }
+    return (float)(int32_t)v * scale;
 }
 #endif
