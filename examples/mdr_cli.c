@@ -19,6 +19,12 @@
  *   mdr table    <profile> [--springs N] --a-max A [--name NAME]
  *                prints the spring table as const C arrays (for flash)
  *
+ *   cycle and table take --arith f32|f64|q31 (default f32). q31: the
+ *   fixed-point engine (lib/include/mdr_q31.h) on the table converted from
+ *   the f64 one, constants by the double init; cycle still reads and prints
+ *   SI values (converted in double), table prints the q31 nodes (N must be
+ *   a power of two).
+ *
  *   <profile> also: --profile table --file FILE (CSV r,f in metres; cycle
  *               and table only; the table extends to the last r)
  *   --springs N  springs of the table (default 1024, up to MDR_SPRINGS_MAX)
@@ -50,7 +56,7 @@ struct cli_args {
     uint8_t kind, control;
     double p[3], E, w, a, r, a_max, a_start, k_m, w_adv;
     long n, springs, steps;
-    int f64, have_control, have_a_start, have_amax;
+    int f64, q31, have_control, have_a_start, have_amax;
     double *path; /* --path values */
     long npath;
     double *tr, *tf; /* --file samples */
@@ -158,6 +164,35 @@ static long read_table(const char *file, double **r, double **f)
     return n;
 }
 
+/* --arith q31: the fixed-point engine, its table and the SI units of its
+ * Q formats (double, from L + L_lo, D0 and 2 E* L D0). */
+typedef struct {
+    mdr_table_q31 t;
+    mdr_engine_q31 e;
+    mdr_node_q31 *nodes;
+    double L, D0, F0, Z0;
+} cli_q31;
+
+/* SI value -> raw Q2.29 of unit, rounded and clamped to the int32 range (the
+ * engine saturates beyond +-2 units and sets MDR_FLAG_SAT) */
+static int32_t q31_raw(double v, double unit)
+{
+    double s = v / unit * 536870912.0;
+    s = s > 2147483647.0 ? 2147483647.0 : s < -2147483648.0 ? -2147483648.0 : s;
+    return (int32_t)(s < 0 ? -(long long)(0.5 - s) : (long long)(s + 0.5));
+}
+
+static mdr_status q31_step(cli_q31 *q, uint8_t control, double v, mdr_step_q31 *o)
+{
+    if (control == MDR_CONTROL_GRIPS) {
+        return mdr_engine_step_d_q31(&q->e, q31_raw(v, q->D0), o);
+    }
+    if (control == MDR_CONTROL_LOAD) {
+        return mdr_engine_step_F_q31(&q->e, q31_raw(v, q->F0), o);
+    }
+    return mdr_engine_step_z_q31(&q->e, q31_raw(v, q->Z0), o);
+}
+
 #define CLI_T float
 #define CLI_SFX(name) name##_f32
 #define CLI_FMT "%.9g"
@@ -241,8 +276,11 @@ int main(int argc, char **argv)
                 A.f64 = 0;
             } else if (strcmp(v, "f64") == 0) {
                 A.f64 = 1;
+            } else if (strcmp(v, "q31") == 0) {
+                A.f64 = 1; /* the q31 table and constants are set up in double */
+                A.q31 = 1;
             } else {
-                return usage_error("--arith takes f32 or f64", v);
+                return usage_error("--arith takes f32, f64 or q31", v);
             }
             continue;
         }
@@ -434,6 +472,12 @@ int main(int argc, char **argv)
         if (A.ntab > 65535) {
             return usage_error("more than 65535 points in", A.file);
         }
+    }
+    if (A.q31 && A.cmd != CMD_CYCLE && A.cmd != CMD_TABLE) {
+        free(A.path);
+        free(A.tr);
+        free(A.tf);
+        return usage_error("--arith q31 works with cycle and table only", NULL);
     }
     rc = A.f64 ? run_f64(&A) : run_f32(&A);
     free(A.path);

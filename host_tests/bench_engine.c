@@ -15,7 +15,10 @@
  * step on average (the only N-dependent work: it is O(1) while that stays
  * below ~1); ns per step of the naive O(N) alternative, the same step
  * followed by the force summed directly over the attached springs (what
- * the prefix sums G_i save); and naive / engine.
+ * the prefix sums G_i save); and naive / engine. The q31 engine runs the
+ * same scene (its table converted from the f64 one, raw Q2.29 inputs) and
+ * is reported beside f32 as q31/f32 at the same N. All inputs are converted
+ * before timing.
  */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
@@ -31,6 +34,10 @@
 
 static mdr_node_f32 n32[4097];
 static mdr_node_f64 n64[4097];
+static mdr_node_q31 nq[4097];
+static float in_f32[STEPS + 1];
+static double in_f64[STEPS + 1];
+static int32_t in_q31[STEPS + 1];
 static volatile double sink;
 
 static double now_ns(void)
@@ -67,7 +74,7 @@ static double path(long i)
                 t0 = now_ns();                                                                    \
                 for (i = 1; i <= STEPS; i++) {                                                    \
                     uint16_t k0 = e.k;                                                            \
-                    if (mdr_engine_step_d_##SFX(&e, (T)path(i), &o) != MDR_OK) {                  \
+                    if (mdr_engine_step_d_##SFX(&e, in_##SFX[i], &o) != MDR_OK) {                 \
                         fprintf(stderr, "bench: step failed\n");                                  \
                         return;                                                                   \
                     }                                                                             \
@@ -95,22 +102,77 @@ static double path(long i)
 BENCH(float, f32, n32, naive_F_f32)
 BENCH(double, f64, n64, naive_F_f64)
 
+/* the q31 engine on the same scene: table from the f64 one, constants by the
+ * double init, the same path as raw Q2.29 depths (converted before timing,
+ * as for f32 and f64) */
+static void bench_q31(uint16_t n, double *ns, double *nodes_per_step)
+{
+    const double p[3] = {1e-6, 0, 0};
+    mdr_contact_f64 c;
+    mdr_table_f64 t;
+    mdr_table_q31 tq;
+    mdr_engine_q31 e;
+    mdr_step_q31 o;
+    double best = 1e300;
+    long i, moved = 0;
+    int r;
+    mdr_contact_init_f64(&c, MDR_PROFILE_SPHERE, p, 1e6, 0.05);
+    mdr_table_init_profile_f64(&t, n64, n, &c, 0.7e-6);
+    if (mdr_table_q31_from_f64(&tq, nq, &t) != MDR_OK ||
+        mdr_engine_init_q31_f64(&e, &tq, 1e6, 0.05, 0.02, 0) != MDR_OK) {
+        fprintf(stderr, "bench: q31 setup failed\n");
+        return;
+    }
+    for (i = 1; i <= STEPS; i++) {
+        in_q31[i] = (int32_t)lround(in_f64[i] / (double)e.D0 * 536870912.0);
+    }
+    for (r = 0; r < REPEAT; r++) {
+        double t0, t1, acc = 0;
+        mdr_engine_init_q31_f64(&e, &tq, 1e6, 0.05, 0.02, 0);
+        t0 = now_ns();
+        for (i = 1; i <= STEPS; i++) {
+            uint16_t k0 = e.k;
+            if (mdr_engine_step_d_q31(&e, in_q31[i], &o) != MDR_OK) {
+                fprintf(stderr, "bench: q31 step failed\n");
+                return;
+            }
+            acc += (double)o.F;
+            if (r == 0) {
+                moved += e.k > k0 ? e.k - k0 : k0 - e.k;
+            }
+        }
+        t1 = now_ns();
+        sink = acc;
+        best = fmin(best, (t1 - t0) / STEPS);
+    }
+    *ns = best;
+    *nodes_per_step = (double)moved / STEPS;
+}
+
 int main(void)
 {
+    double f32ns[7] = {0};
+    long i;
     int a;
+    for (i = 1; i <= STEPS; i++) {
+        in_f64[i] = path(i);
+        in_f32[i] = (float)in_f64[i];
+    }
     printf("engine step cost vs springs N (sphere, fixed grips, %d-tick approach-retract cycle, "
            "best of %d)\n", STEPS, REPEAT);
     for (a = 0; a < 2; a++) {
         double base = 0, worst = 0;
         uint16_t n;
+        int j = 0;
         printf("%s\n     N   ns/step  ratio-to-64  nodes/step   naive-ns  naive/engine\n",
                a ? "f64" : "f32");
-        for (n = 64; n <= 4096; n = (uint16_t)(n * 2)) {
+        for (n = 64; n <= 4096; n = (uint16_t)(n * 2), j++) {
             double ns = 0, nn = 0, mv = 0;
             if (a) {
                 bench_f64(n, &ns, &nn, &mv);
             } else {
                 bench_f32(n, &ns, &nn, &mv);
+                f32ns[j] = ns;
             }
             if (n == 64) {
                 base = ns;
@@ -118,6 +180,24 @@ int main(void)
             worst = fmax(worst, ns / base);
             printf("  %5u  %8.1f  %11.2f  %10.3f  %9.1f  %12.1f\n", (unsigned)n, ns, ns / base, mv,
                    nn, nn / ns);
+        }
+        printf("  largest ratio to N = 64: %.2f (goal <= 1.2)\n", worst);
+    }
+    {
+        double base = 0, worst = 0;
+        uint16_t n;
+        int j = 0;
+        printf("q31 (integer step; host: 64-bit multiply and divide in hardware)\n"
+               "     N   ns/step  ratio-to-64  nodes/step   q31/f32\n");
+        for (n = 64; n <= 4096; n = (uint16_t)(n * 2), j++) {
+            double ns = 0, mv = 0;
+            bench_q31(n, &ns, &mv);
+            if (n == 64) {
+                base = ns;
+            }
+            worst = fmax(worst, ns / base);
+            printf("  %5u  %8.1f  %11.2f  %10.3f  %8.2f\n", (unsigned)n, ns, ns / base, mv,
+                   ns / f32ns[j]);
         }
         printf("  largest ratio to N = 64: %.2f (goal <= 1.2)\n", worst);
     }

@@ -52,7 +52,7 @@ done
 # cycle: CSV step,z,d,F,a,event on stdout, JSON summary on stderr
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-for arith in f32 f64; do
+for arith in f32 f64 q31; do
     $MDR cycle $P --control grips --path 0,0.5e-6,-0.6e-6 --steps-per-segment 2000 --springs 256 \
         --arith $arith >"$TMP/c.csv" 2>"$TMP/c.json" || bad "cycle grips exit ($arith)"
     [ "$(head -1 "$TMP/c.csv")" = "step,z,d,F,a,event" ] && ok || bad "cycle header"
@@ -64,12 +64,24 @@ for arith in f32 f64; do
     done
     near "$(key "$j" pull_off_F)" -1.308996939e-6 1e-5 && ok || bad "cycle grips pull-off F ($arith): $j"
     near "$(key "$j" pull_off_d)" -0.470407800461e-6 1e-5 && ok || bad "cycle grips pull-off d ($arith)"
+    [ "$(key "$j" arith)" = "\"$arith\"" ] && ok || bad "cycle arith key ($arith): $j"
     [ "$(key "$j" events)" = 2 ] && ok || bad "cycle: contact + pull-off = 2 events: $j"
     grep -q ',contact$' "$TMP/c.csv" && grep -q ',pull-off$' "$TMP/c.csv" && ok || bad "cycle event column"
 done
 j=$($MDR cycle $P --control load --path 0,3e-6,-3e-6 --steps-per-segment 1000 --w-adv 0.05 \
     --springs 128 --arith f64 2>&1 >/dev/null) || bad "cycle load exit"
 near "$(key "$j" pull_off_F)" -2.35619449019e-6 1e-9 && ok || bad "cycle load pull-off: $j"
+# the q31 engine under load: pull-off to 1e-6 of JKR (the paraboloid table is exact)
+j=$($MDR cycle $P --control load --path 0,3e-6,-3e-6 --steps-per-segment 1000 --w-adv 0.05 \
+    --springs 128 --arith q31 2>&1 >/dev/null) || bad "cycle load q31 exit"
+near "$(key "$j" pull_off_F)" -2.35619449019e-6 1e-6 && ok || bad "cycle load pull-off q31: $j"
+# a q31 const table compiles; N must be a power of two for q31
+$MDR table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --arith q31 --name tq >"$TMP/tq.c" &&
+    ${CC:-cc} -std=c99 -Wall -Werror -Ilib/include -c "$TMP/tq.c" -o "$TMP/tq.o" && ok ||
+    bad "mdr table --arith q31 compiles"
+grep -q 'const mdr_table_q31 tq = ' "$TMP/tq.c" && ok || bad "q31 table header"
+$MDR table --profile sphere --R 1e-6 --springs 100 --a-max 5e-7 --arith q31 >/dev/null 2>&1
+[ $? -ne 0 ] && ok || bad "q31 table with N = 100 fails"
 j=$($MDR cycle $P --control machine --k-machine 1 --path 0,5e-6,-15e-6 --steps-per-segment 2000 \
     --arith f64 2>&1 >/dev/null) || bad "cycle machine exit"
 [ "$(key "$j" pull_off_F)" != null ] && ok || bad "cycle machine pulls off: $j"
@@ -114,6 +126,8 @@ expect2 curve $P --a-max 1e-5 --n 0
 expect2 stress $P --a 1e-6 --r 2e-6
 expect2 stress --profile cone --theta 0.5 --E 1 --w 1 --a 1 --r 0
 expect2 cycle $P --control grips --path 0,1e-6
+expect2 eq $P --a 1e-6 --arith q31
+expect2 eq $P --a 1e-6 --arith q15
 expect2 cycle $P --control grips --steps-per-segment 10
 expect2 cycle $P --path 0,1e-6 --steps-per-segment 10
 expect2 cycle $P --control grips --path 0,x --steps-per-segment 10
