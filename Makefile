@@ -199,11 +199,12 @@ cross: $(foreach c,$(CROSS_CFGS),$(B)/$(c)/link_check.elf)
 	done
 
 size: cross
-	@printf '%-11s %8s %8s %8s   %s\n' config text data bss "(f32 library, all profiles; link_check.elf after --gc-sections)"
+	@printf '%-11s %8s %8s %8s   %s\n' config text data bss "(f32 + q31 library, all profiles; link_check.elf after --gc-sections)"
 	@for c in $(CROSS_CFGS); do \
 	  sz=$$(case $$c in rv*) echo $(RV)size;; *) echo $(ARM)size;; esac); \
 	  $$sz $(B)/$$c/libmdr.a | awk -v c=$$c 'NR>1{t+=$$1;d+=$$2;b+=$$3} END{printf "%-11s %8d %8d %8d   libmdr.a\n",c,t,d,b}'; \
 	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c 'NR>1{printf "%-11s %8d %8d %8d   link_check.elf\n",c,$$1,$$2,$$3}'; \
+	  $$sz $(B)/$$c/mdr_q31.o | awk -v c=$$c 'NR>1{printf "%-11s %8d %8d %8d   mdr_q31.o (the q31 step alone)\n",c,$$1,$$2,$$3}'; \
 	done
 
 # ---- dependencies --------------------------------------------------------------
