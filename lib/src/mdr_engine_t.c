@@ -228,17 +228,9 @@ mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) 
 
 /* ---------------------------------------------------------------- engine */
 
-mdr_status MDR_SFX(mdr_engine_init)(MDR_SFX(mdr_engine) *e, const MDR_SFX(mdr_table) *tab,
-                                    MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m)
+/* The material and machine checks of every engine init (f32, f64, q31). */
+static mdr_status MDR_SFX(mdr_e_material)(MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m)
 {
-    MDR_SFX(mdr_engine) z;
-    if (e == NULL || tab == NULL || tab->node == NULL) {
-        return MDR_E_NULL;
-    }
-    if (!MDR_SFX(mdr_e_size_ok)(tab->n) || !(tab->h > MDR_K(0.0)) ||
-        !MDR_SFX(mdr_m_isfinite)(tab->h)) {
-        return MDR_E_SIZE;
-    }
     if (!MDR_SFX(mdr_m_isfinite)(E) || !MDR_SFX(mdr_m_isfinite)(w) ||
         !MDR_SFX(mdr_m_isfinite)(w_adv) || !MDR_SFX(mdr_m_isfinite)(k_m)) {
         return MDR_E_NONFINITE;
@@ -248,6 +240,25 @@ mdr_status MDR_SFX(mdr_engine_init)(MDR_SFX(mdr_engine) *e, const MDR_SFX(mdr_ta
     }
     if (k_m < MDR_K(0.0)) {
         return MDR_E_CONTROL;
+    }
+    return MDR_OK;
+}
+
+mdr_status MDR_SFX(mdr_engine_init)(MDR_SFX(mdr_engine) *e, const MDR_SFX(mdr_table) *tab,
+                                    MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m)
+{
+    MDR_SFX(mdr_engine) z;
+    mdr_status st;
+    if (e == NULL || tab == NULL || tab->node == NULL) {
+        return MDR_E_NULL;
+    }
+    if (!MDR_SFX(mdr_e_size_ok)(tab->n) || !(tab->h > MDR_K(0.0)) ||
+        !MDR_SFX(mdr_m_isfinite)(tab->h)) {
+        return MDR_E_SIZE;
+    }
+    st = MDR_SFX(mdr_e_material)(E, w, w_adv, k_m);
+    if (st != MDR_OK) {
+        return st;
     }
     z.tab = tab;
     z.E = E;

@@ -119,6 +119,7 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     mdr_engine_q31 z;
     MDR_T L, cw, ca, M, D0, kap, sc;
     uint8_t k = 0;
+    mdr_status st;
     if (e == NULL || tab == NULL || tab->node == NULL) {
         return MDR_E_NULL;
     }
@@ -129,15 +130,9 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
         tab->gmax < 0) {
         return MDR_E_SIZE;
     }
-    if (!MDR_SFX(mdr_m_isfinite)(E) || !MDR_SFX(mdr_m_isfinite)(w) ||
-        !MDR_SFX(mdr_m_isfinite)(w_adv) || !MDR_SFX(mdr_m_isfinite)(k_m)) {
-        return MDR_E_NONFINITE;
-    }
-    if (!(E > MDR_K(0.0)) || !(w >= MDR_K(0.0)) || !(w_adv >= MDR_K(0.0)) || w_adv > w) {
-        return MDR_E_PARAM;
-    }
-    if (k_m < MDR_K(0.0)) {
-        return MDR_E_CONTROL;
+    st = MDR_SFX(mdr_e_material)(E, w, w_adv, k_m);
+    if (st != MDR_OK) {
+        return st;
     }
     /* dl(L) = sqrt(2 pi w L / E*) on retraction, approach */
     cw = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w / E) * L);
