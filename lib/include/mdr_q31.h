@@ -82,7 +82,7 @@ typedef struct {
 } mdr_table_q31;
 
 /** The q31 engine: scene constants and state. Caller-owned; fill with
- *  mdr_engine_init_q31(), change only through the step functions. */
+ *  mdr_engine_init_q31_f32() or _f64(), change only through the step functions. */
 typedef struct {
     const mdr_table_q31 *tab;
     float L, D0, F0, Z0; /**< units [m, m, N, m] as float (conversions; not used by the step).
