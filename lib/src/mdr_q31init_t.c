@@ -24,11 +24,20 @@ static bool MDR_SFX(mdr_q_fmt)(MDR_T v, MDR_T f, int32_t *out)
     return true;
 }
 
+/* The least e with 2^e >= v, v > 0 finite (from mdr_m_frexp: v = f 2^x,
+ * f in [1, 2), so 2^x <= v < 2^(x+1), equality only for f = 1). */
+static int MDR_SFX(mdr_q_log2_ceil)(MDR_T v)
+{
+    int x;
+    MDR_T f = MDR_SFX(mdr_m_frexp)(v, &x);
+    return f == MDR_K(1.0) ? x : x + 1;
+}
+
 mdr_status MDR_SFX(mdr_table_q31_from)(mdr_table_q31 *tab, mdr_node_q31 *node,
                                        const MDR_SFX(mdr_table) *src)
 {
     const MDR_T Q30 = MDR_K(1073741824.0), Q28 = MDR_K(268435456.0);
-    MDR_T gmax = MDR_K(0.0), Dg = MDR_K(1.0), L, LD, bs, Qb;
+    MDR_T gmax = MDR_K(0.0), Dg, L, LD, bs, Qb;
     uint8_t fb = 30;
     int32_t gq = 0;
     uint16_t i, n;
@@ -49,15 +58,8 @@ mdr_status MDR_SFX(mdr_table_q31_from)(mdr_table_q31 *tab, mdr_node_q31 *node,
         gmax = ag > gmax ? ag : gmax;
     }
     /* Dg: the least power of two >= max|g| (>= L/1024 for an all-flat g) */
-    {
-        MDR_T want = gmax > MDR_K(0.0) ? gmax : L * MDR_K(0.0009765625);
-        while (Dg < want) {
-            Dg *= MDR_K(2.0);
-        }
-        while (Dg * MDR_K(0.5) >= want) {
-            Dg *= MDR_K(0.5);
-        }
-    }
+    Dg = MDR_SFX(mdr_m_ldexp)(
+        MDR_K(1.0), MDR_SFX(mdr_q_log2_ceil)(gmax > MDR_K(0.0) ? gmax : L * MDR_K(0.0009765625)));
     LD = L * Dg;
     bs = MDR_K(6.0) * (MDR_T)n / LD;
     /* fb: the most fractional bits (30..40) that hold every b_i with a bit
@@ -138,14 +140,15 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     cw = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w / E) * L);
     ca = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w_adv / E) * L);
     M = (MDR_T)tab->gmax * ((MDR_T)tab->Dg / Q30) + cw;
-    D0 = (MDR_T)tab->Dg;
-    while (D0 < M) {
-        if (k >= 60) {
+    /* D0 = 2^k Dg, the least k >= 0 with D0 >= M (Dg is a power of two) */
+    if (M > (MDR_T)tab->Dg) {
+        int kk = MDR_SFX(mdr_q_log2_ceil)(M) - MDR_SFX(mdr_q_log2_ceil)((MDR_T)tab->Dg);
+        if (kk > 60) {
             return MDR_E_OVERFLOW;
         }
-        D0 *= MDR_K(2.0);
-        k++;
+        k = (uint8_t)kk;
     }
+    D0 = MDR_SFX(mdr_m_ldexp)((MDR_T)tab->Dg, k);
     z.tab = tab;
     z.L = tab->L;
     z.D0 = (float)D0;
@@ -166,11 +169,13 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
         }
         z.al_z = MDR_SFX(mdr_q_round)(Q30 / (MDR_K(1.0) + kap));
         z.ka_z = MDR_Q30_ONE - z.al_z;
-        sc = MDR_K(1.0);
-        while (sc * MDR_K(2.0) <= MDR_K(1.0) + kap) {
-            sc *= MDR_K(2.0);
-            z.sz++;
+        /* sz = floor(log2(1 + kap)): 1 + kap = f 2^x, f in [1, 2), sz = x */
+        {
+            int x;
+            (void)MDR_SFX(mdr_m_frexp)(MDR_K(1.0) + kap, &x);
+            z.sz = (uint8_t)x;
         }
+        sc = MDR_SFX(mdr_m_ldexp)(MDR_K(1.0), z.sz);
         z.z_in = MDR_SFX(mdr_q_round)(Q30 * (sc / (MDR_K(1.0) + kap)));
         z.z_k = MDR_SFX(mdr_q_round)(Q30 * (kap / sc));
     }
