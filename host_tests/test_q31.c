@@ -136,6 +136,22 @@ static double residual(const scene *sc, const mdr_table_f64 *t64, double a, doub
     return r;
 }
 
+/* one q31 tick of control mode ctl */
+static mdr_status step_q31(mdr_engine_q31 *q, int ctl, int32_t u, mdr_step_q31 *o)
+{
+    return ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_q31(q, u, o)
+           : ctl == MDR_CONTROL_LOAD ? mdr_engine_step_F_q31(q, u, o)
+                                     : mdr_engine_step_z_q31(q, u, o);
+}
+
+/* residual() of a q31 state, converted to SI with the double units L, D0 2^-29, F0 2^-29 */
+static double residual_q31(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q31 *tq,
+                           double Lq, double Dq, double Fq, const mdr_step_q31 *o)
+{
+    return residual(sc, t64, o->a * Lq / 1073741824.0, o->d * Dq, o->F * Fq,
+                    tq->wall && o->a == MDR_Q30_ONE);
+}
+
 /* one approach-retract cycle under control ctl (path from the f64 grips run) */
 static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q31 *tq, int ctl)
 {
@@ -182,31 +198,23 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
         double u = i <= nup ? top * i / nup : top + (bot - top) * (i - nup) / ndown;
         int32_t uq = q29(u, unit);
         double uf = uq * unit / 536870912.0; /* the same input for f64 */
-        double a, d, F;
-        mdr_status s1, s2;
+        int sample = i % ((nup + ndown) / NCHECK) == 0;
+        double F;
+        mdr_status s1;
         s1 = ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_f64(&e, uf, &o)
              : ctl == MDR_CONTROL_LOAD ? mdr_engine_step_F_f64(&e, uf, &o)
                                        : mdr_engine_step_z_f64(&e, uf, &o);
-        s2 = ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_q31(&q, uq, &oq)
-             : ctl == MDR_CONTROL_LOAD ? mdr_engine_step_F_q31(&q, uq, &oq)
-                                       : mdr_engine_step_z_q31(&q, uq, &oq);
         assert_int_equal(s1, MDR_OK);
-        assert_int_equal(s2, MDR_OK);
-        s2 = ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_q31(&qf, uq, &oqf)
-             : ctl == MDR_CONTROL_LOAD ? mdr_engine_step_F_q31(&qf, uq, &oqf)
-                                       : mdr_engine_step_z_q31(&qf, uq, &oqf);
-        assert_int_equal(s2, MDR_OK);
-        if (qf.contact && (i % ((nup + ndown) / NCHECK) == 0 || oqf.jumps)) {
-            res.lsbf = fmax(res.lsbf, residual(sc, t64, oqf.a * Lq / 1073741824.0, oqf.d * Dq,
-                                               oqf.F * Fq, tq->wall && oqf.a == MDR_Q30_ONE) / Fq);
+        assert_int_equal(step_q31(&q, ctl, uq, &oq), MDR_OK);
+        assert_int_equal(step_q31(&qf, ctl, uq, &oqf), MDR_OK);
+        if (qf.contact && (sample || oqf.jumps)) {
+            res.lsbf = fmax(res.lsbf, residual_q31(sc, t64, tq, Lq, Dq, Fq, &oqf) / Fq);
         }
-        a = oq.a * Lq / 1073741824.0;
-        d = oq.d * Dq;
         F = oq.F * Fq;
         res.Fmax = fmax(res.Fmax, fmax(fabs(F), fabs(o.F)));
         res.jumps += oq.jumps;
         if (i == nup) {
-            a_top = a;
+            a_top = oq.a * Lq / 1073741824.0;
         }
         if (oq.event == MDR_EV_PULL_OFF) {
             po = oq;
@@ -214,13 +222,12 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
         if (o.event == MDR_EV_PULL_OFF) {
             po64 = o;
         }
-        if (q.contact && (i % ((nup + ndown) / NCHECK) == 0 || oq.jumps)) {
-            int wall = tq->wall && oq.a == MDR_Q30_ONE;
-            res.eC = fmax(res.eC, residual(sc, NULL, a, d, F, wall));
-            res.lsb = fmax(res.lsb, residual(sc, t64, a, d, F, wall) / Fq);
+        if (q.contact && (sample || oq.jumps)) {
+            res.eC = fmax(res.eC, residual_q31(sc, NULL, tq, Lq, Dq, Fq, &oq));
+            res.lsb = fmax(res.lsb, residual_q31(sc, t64, tq, Lq, Dq, Fq, &oq) / Fq);
             checked++;
         }
-        if (e.contact && (i % ((nup + ndown) / NCHECK) == 0 || o.jumps)) {
+        if (e.contact && (sample || o.jumps)) {
             res.eF = fmax(res.eF, residual(sc, NULL, o.a, o.d, o.F, t64->wall && o.a == sc->L));
         }
     }
