@@ -22,13 +22,14 @@ HOSTCC := $(CROSS_COMPILE)$(CC)
 
 B := build
 WARN := -Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow -Wvla -Werror
-MDR_CFLAGS := -std=c99 -ffreestanding -fno-math-errno -ffunction-sections -fdata-sections $(WARN) \
-              -Ilib/include -Iport/host
+MDR_CFLAGS = $(MDR_REQUIRED_CFLAGS) $(WARN) -Ilib/include -Iport/host
 TEST_CFLAGS := -std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -Iref -Iport/host
 GSL_LIBS := -lgsl -lgslcblas -lm
 
-LIB_SRC := lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c
-LIB_DEPS := $(wildcard lib/include/*.h lib/src/*.h lib/src/*.c port/host/*.h)
+MDR_ROOT := .
+include lib/Filelists.mk
+LIB_SRC := $(MDR_SRC_ALL)
+LIB_DEPS := $(MDR_DEPS) $(wildcard lib/src/*.c port/*/mdr_port.h)
 REF_SRC := ref/mdr_ref.c
 
 .PHONY: q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
@@ -153,17 +154,27 @@ tables: $(B)/host/gen_tables
 	./$(B)/host/gen_tables > lib/src/mdr_tables.h
 
 # ---- cross builds -------------------------------------------------------------
-# Each configuration compiles the f32 library with -ffreestanding, links the
-# link-check program with -nostdlib -lgcc and --gc-sections, and fails on an
-# undefined symbol outside the allow-list or a double-precision helper.
-ARM := arm-none-eabi-
-RV := riscv64-unknown-elf-
-CROSS_WARN := -std=c99 -ffreestanding -fno-math-errno -ffunction-sections -fdata-sections -Os $(WARN)
-CFG_m4f := $(ARM)gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Iport/cortex-m
-CFG_m0 := $(ARM)gcc -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -Iport/cortex-m
-CFG_rv32imafc := $(RV)gcc -march=rv32imafc -mabi=ilp32f -Iport/riscv
-CFG_rv32imac := $(RV)gcc -march=rv32imac -mabi=ilp32 -Iport/riscv
-CROSS_CFGS := m4f m0 rv32imafc rv32imac
+# Per core (flags: port/*/port.mk) the library objects are compiled with
+# -ffreestanding -Werror, -fstack-usage and a call graph; per core and
+# arithmetic port/link_check.c is linked with -nostdlib -lgcc --gc-sections.
+# Checks: no undefined symbol outside the allow-list in lib/ objects, no
+# double-precision helper in any link (all are f32 or q31 programs), no
+# floating-point helper at all in the q31 step (mdr_q31.o).
+include port/cortex-m/port.mk
+include port/riscv/port.mk
+CROSS_WARN := $(MDR_REQUIRED_CFLAGS) -Os $(WARN)
+CORE_m0 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m0) -Iport/cortex-m
+CORE_m4f := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m4f) -Iport/cortex-m
+CORE_m7 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m7) -Iport/cortex-m
+CORE_rv32imac := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imac) -Iport/riscv
+CORE_rv32imafc := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imafc) -Iport/riscv
+CROSS_CORES := m0 m4f m7 rv32imac rv32imafc
+# core-arithmetic: Cortex-M0 runs q31, the M7 f32, the M4F and RV32 both
+CROSS_CFGS := m0-q31 m4f-f32 m4f-q31 m7-f32 rv32imac-f32 rv32imac-q31 rv32imafc-f32 rv32imafc-q31
+LC_f32 := -DMDR_LC_F32 -DMDR_LC_STRESS
+LC_q31 := -DMDR_LC_Q31
+# the tools of a core (binutils prefix)
+xtool = $(if $(filter rv%,$(1)),$(MDR_RV_PREFIX),$(MDR_CM_PREFIX))$(2)
 # undefined symbols allowed in lib/ objects: the two mem* functions GCC may
 # call, and libgcc helpers (checked separately for double precision)
 ALLOW_RE := ^(memcpy|memset|__aeabi_[a-z0-9]+|__gnu_thumb1_case_[a-z0-9]+|__[a-z]+sf[0-9]|__float(un)?sisf|__fix(uns)?sfsi|__[a-z]+[sd]i[0-9]|__clz[sd]i2)$$
@@ -171,41 +182,66 @@ ALLOW_RE := ^(memcpy|memset|__aeabi_[a-z0-9]+|__gnu_thumb1_case_[a-z0-9]+|__[a-z
 # in the q31 step (lib/src/mdr_q31.c), which is integer arithmetic only
 FLOAT_RE := ^(__aeabi_([fd][a-z0-9]+|[a-z0-9]*2[fd][a-z]*)|__[a-z]+[sd]f[0-9]?|__[a-z]+[sd]f[a-z0-9]*)$$
 DOUBLE_RE := ^(__aeabi_(d[a-z0-9]+|[a-z0-9]*2d[a-z]*)|__[a-z]+df[0-9]?|__[a-z]+df[a-z0-9]*)$$
+CROSS_OBJS := mdr_f32 mdr_q31 mdr_status
 
-define cross_rules
-$(B)/$(1)/libmdr.a: $(LIB_DEPS) port/link_check.c
+define core_rules
+$(B)/$(1)/libmdr.a: $(LIB_DEPS) port/sizes.c
 	@mkdir -p $(B)/$(1)
-	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -c lib/src/mdr_f32.c -o $(B)/$(1)/mdr_f32.o
-	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -c lib/src/mdr_q31.c -o $(B)/$(1)/mdr_q31.o
-	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -c lib/src/mdr_status.c -o $(B)/$(1)/mdr_status.o
-	rm -f $$@ && $(if $(filter rv%,$(1)),$(RV)ar,$(ARM)ar) rcs $$@ $(B)/$(1)/mdr_f32.o $(B)/$(1)/mdr_q31.o $(B)/$(1)/mdr_status.o
-$(B)/$(1)/link_check.elf: $(B)/$(1)/libmdr.a
-	$(CFG_$(1)) $(CROSS_WARN) -Ilib/include -nostdlib -Wl,--gc-sections -Wl,-e,link_check_entry \
-	  port/link_check.c $(B)/$(1)/libmdr.a -lgcc -o $$@
+	cd $(B)/$(1) && for o in $(CROSS_OBJS); do \
+	  $(CORE_$(1)) $(CROSS_WARN) -fstack-usage -fcallgraph-info=su -I$(CURDIR)/lib/include \
+	    $(subst -Iport,-I$(CURDIR)/port,$(filter -Iport%,$(CORE_$(1)))) -c $(CURDIR)/lib/src/$$$$o.c -o $$$$o.o || exit 1; done
+	$(CORE_$(1)) $(CROSS_WARN) -Ilib/include -c port/sizes.c -o $(B)/$(1)/sizes.o
+	rm -f $$@ && $(call xtool,$(1),ar) rcs $$@ $(addprefix $(B)/$(1)/,$(addsuffix .o,$(CROSS_OBJS)))
 endef
-$(foreach c,$(CROSS_CFGS),$(eval $(call cross_rules,$(c))))
+define link_rules
+$(B)/$(1)/link_check.elf: $(B)/$(word 1,$(subst -, ,$(1)))/libmdr.a port/link_check.c
+	@mkdir -p $(B)/$(1)
+	$(CORE_$(word 1,$(subst -, ,$(1)))) $(CROSS_WARN) $(LC_$(word 2,$(subst -, ,$(1)))) -Ilib/include \
+	  -nostdlib -Wl,--gc-sections -Wl,-e,link_check_entry port/link_check.c $$< -lgcc -o $$@
+endef
+$(foreach c,$(CROSS_CORES),$(eval $(call core_rules,$(c))))
+$(foreach c,$(CROSS_CFGS),$(eval $(call link_rules,$(c))))
 
 cross: $(foreach c,$(CROSS_CFGS),$(B)/$(c)/link_check.elf)
-	@set -e; for c in $(CROSS_CFGS); do \
-	  nmtool=$$(case $$c in rv*) echo $(RV)nm;; *) echo $(ARM)nm;; esac); \
-	  und=$$($$nmtool -u $(B)/$$c/mdr_f32.o $(B)/$$c/mdr_q31.o $(B)/$$c/mdr_status.o | awk 'NF==2{print $$2}' | sort -u); \
+	@set -e; for k in $(CROSS_CORES); do \
+	  nm=$$(case $$k in rv*) echo $(MDR_RV_PREFIX)nm;; *) echo $(MDR_CM_PREFIX)nm;; esac); \
+	  und=$$($$nm -u $(B)/$$k/mdr_f32.o $(B)/$$k/mdr_q31.o $(B)/$$k/mdr_status.o | awk 'NF==2{print $$2}' | sort -u); \
 	  bad=$$(printf '%s\n' $$und | grep -Ev '$(ALLOW_RE)' | grep -v '^$$' || true); \
-	  if [ -n "$$bad" ]; then echo "cross $$c: undefined symbols outside the allow-list: $$bad"; exit 1; fi; \
-	  dbl=$$($$nmtool $(B)/$$c/link_check.elf | awk '{print $$NF}' | grep -E '$(DOUBLE_RE)' || true); \
-	  if [ -n "$$dbl" ]; then echo "cross $$c: double-precision helpers in an f32 build: $$dbl"; exit 1; fi; \
-	  qf=$$($$nmtool -u $(B)/$$c/mdr_q31.o | awk 'NF==2{print $$2}' | grep -E '$(FLOAT_RE)' || true); \
-	  if [ -n "$$qf" ]; then echo "cross $$c: float helpers in the q31 step: $$qf"; exit 1; fi; \
-	  echo "cross $$c: ok (undefined in lib: $$(printf '%s ' $$und); q31 step: $$($$nmtool -u $(B)/$$c/mdr_q31.o | awk 'NF==2{printf "%s ", $$2}'))"; \
+	  if [ -n "$$bad" ]; then echo "cross $$k: undefined symbols outside the allow-list: $$bad"; exit 1; fi; \
+	  qf=$$($$nm -u $(B)/$$k/mdr_q31.o | awk 'NF==2{print $$2}' | grep -E '$(FLOAT_RE)' || true); \
+	  if [ -n "$$qf" ]; then echo "cross $$k: float helpers in the q31 step: $$qf"; exit 1; fi; \
+	  echo "cross $$k: lib/ ok (undefined: $$(printf '%s ' $$und); q31 step: $$($$nm -u $(B)/$$k/mdr_q31.o | awk 'NF==2{printf "%s ", $$2}'))"; \
+	done; \
+	for c in $(CROSS_CFGS); do \
+	  nm=$$(case $$c in rv*) echo $(MDR_RV_PREFIX)nm;; *) echo $(MDR_CM_PREFIX)nm;; esac); \
+	  dbl=$$($$nm $(B)/$$c/link_check.elf | awk '{print $$NF}' | grep -E '$(DOUBLE_RE)' || true); \
+	  if [ -n "$$dbl" ]; then echo "cross $$c: double-precision helpers: $$dbl"; exit 1; fi; \
+	  echo "cross $$c: linked with -nostdlib -lgcc, no double helper"; \
 	done
 
+# Flash (text + data) of each core-arithmetic program after --gc-sections,
+# lib/'s own static RAM (data + bss of its objects), the instance sizes on
+# the core, and the worst stack depth of the step functions from the call
+# graph (port/stack_depth.awk; libgcc helpers listed, not counted).
 size: cross
-	@printf '%-11s %8s %8s %8s   %s\n' config text data bss "(f32 + q31 library, all profiles; link_check.elf after --gc-sections)"
+	@printf '%-14s %7s %7s   %s\n' config flash "lib RAM" "program (port/link_check.c, --gc-sections)"
 	@for c in $(CROSS_CFGS); do \
-	  sz=$$(case $$c in rv*) echo $(RV)size;; *) echo $(ARM)size;; esac); \
-	  $$sz $(B)/$$c/libmdr.a | awk -v c=$$c 'NR>1{t+=$$1;d+=$$2;b+=$$3} END{printf "%-11s %8d %8d %8d   libmdr.a\n",c,t,d,b}'; \
-	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c 'NR>1{printf "%-11s %8d %8d %8d   link_check.elf\n",c,$$1,$$2,$$3}'; \
-	  $$sz $(B)/$$c/mdr_q31.o | awk -v c=$$c 'NR>1{printf "%-11s %8d %8d %8d   mdr_q31.o (the q31 step alone)\n",c,$$1,$$2,$$3}'; \
+	  k=$${c%%-*}; a=$${c#*-}; sz=$$(case $$k in rv*) echo $(MDR_RV_PREFIX)size;; *) echo $(MDR_CM_PREFIX)size;; esac); \
+	  ram=$$($$sz $(B)/$$k/libmdr.a | awk 'NR>1{s+=$$2+$$3} END{print s}'); \
+	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c -v r=$$ram -v a=$$a 'NR>1{printf "%-14s %7d %7d   %s\n",c,$$1+$$2,r,(a=="f32"?"all profiles, closed forms, critical states, stress, tables, engine":"all profiles: table from a profile, q31 conversion, float init, q31 steps")}'; \
 	done
+	@echo; printf '%-10s %s\n' core "instance sizes in bytes (sizeof on the core)"
+	@for k in $(CROSS_CORES); do \
+	  nm=$$(case $$k in rv*) echo $(MDR_RV_PREFIX)nm;; *) echo $(MDR_CM_PREFIX)nm;; esac); \
+	  $$nm -S $(B)/$$k/sizes.o | awk -v k=$$k 'function hex(h, i, v) { v = 0; for (i = 1; i <= length(h); i++) v = 16 * v + index("0123456789abcdef", substr(h, i, 1)) - 1; return v } \
+	    {n=$$4; sub(/^mdr_sizeof_/,"",n); s=s sprintf(" %s %d", n, hex($$2))} END{printf "%-10s%s\n", k, s}'; \
+	done
+	@echo; echo "worst stack depth of a step function (d, F or z), bytes: call graph of -fstack-usage, libgcc helpers not counted"
+	@for k in $(CROSS_CORES); do for a in f32 q31; do \
+	  awk -v roots="^mdr_engine_step_[dFz]_$$a\$$" -f port/stack_depth.awk $(B)/$$k/*.ci | sort -k2 -n | tail -1 | \
+	    awk -v k=$$k -v a=$$a '{ext = $$0; if (!sub(/^.*\[\+ /, "", ext)) ext = ""; sub(/ \]$$/, "", ext); \
+	      n = split(ext, x, " "); printf "%-10s %s %5d   %s%s\n", k, a, $$2, $$3, (n ? sprintf("  + %d libgcc/mem helpers", n) : "")}'; \
+	 done; done
 
 # ---- dependencies --------------------------------------------------------------
 DEB_PKGS := gcc clang make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf

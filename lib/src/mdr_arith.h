@@ -18,7 +18,7 @@
 #include <float.h>
 #include <stdint.h>
 
-#include "mdr_port.h"
+#include "mdr_hooks.h"
 
 #if defined(MDR_ARITH_F32)
 #define MDR_T float
@@ -54,10 +54,6 @@
 #endif
 #else
 #error "define MDR_ARITH_F32 or MDR_ARITH_F64 before including mdr_arith.h"
-#endif
-
-#ifndef MDR_ASSERT
-#define MDR_ASSERT(cond) ((void)0)
 #endif
 
 #define MDR_PI MDR_K(3.14159265358979323846264338327950288)

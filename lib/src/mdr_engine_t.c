@@ -22,7 +22,7 @@
 /* ---------------------------------------------------------------- tables */
 
 /* Kahan accumulation: *s + *cmp holds the sum to ~eps relative. */
-static void MDR_SFX(mdr_e_kahan)(MDR_T *s, MDR_T *cmp, MDR_T v)
+MDR_INLINE MDR_STEP_FN void MDR_SFX(mdr_e_kahan)(MDR_T *s, MDR_T *cmp, MDR_T v)
 {
     MDR_T y = v - *cmp;
     MDR_T tt = *s + y;
@@ -305,7 +305,7 @@ typedef struct {
 
 /* g, G, g' at t in spring k (t_k <= t <= t_{k+1}): the quadratic of the
  * table header, e = x - x_k. */
-static MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_at)(const MDR_SFX(mdr_e_branch) *b, uint16_t k, MDR_T t)
+static MDR_STEP_FN MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_at)(const MDR_SFX(mdr_e_branch) *b, uint16_t k, MDR_T t)
 {
     const MDR_SFX(mdr_node) *n0 = &b->tab->node[k];
     const MDR_SFX(mdr_node) *n1 = n0 + 1;
@@ -325,7 +325,7 @@ static MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_at)(const MDR_SFX(mdr_e_branch) *b, uint1
 }
 
 /* The profile exactly at node j (no interpolation; dg unused there). */
-static MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_node)(const MDR_SFX(mdr_e_branch) *b, uint16_t j)
+static MDR_STEP_FN MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_node)(const MDR_SFX(mdr_e_branch) *b, uint16_t j)
 {
     MDR_SFX(mdr_e_pt) p;
     p.t = b->tab->node[j].t;
@@ -337,13 +337,13 @@ static MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_node)(const MDR_SFX(mdr_e_branch) *b, uin
     return p;
 }
 
-static MDR_T MDR_SFX(mdr_e_U)(const MDR_SFX(mdr_e_branch) *b, const MDR_SFX(mdr_e_pt) *p)
+static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_U)(const MDR_SFX(mdr_e_branch) *b, const MDR_SFX(mdr_e_pt) *p)
 {
     MDR_T D = p->g - b->c * p->t;
     return b->al * D + b->ka * (p->x * D - p->G);
 }
 
-static MDR_T MDR_SFX(mdr_e_dU)(const MDR_SFX(mdr_e_branch) *b, const MDR_SFX(mdr_e_pt) *p)
+static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_dU)(const MDR_SFX(mdr_e_branch) *b, const MDR_SFX(mdr_e_pt) *p)
 {
     MDR_T tg = MDR_K(2.0) * p->t * p->dg;
     return b->al * (tg - b->c) + b->ka * p->x * (tg - MDR_K(3.0) * b->c);
@@ -352,7 +352,7 @@ static MDR_T MDR_SFX(mdr_e_dU)(const MDR_SFX(mdr_e_branch) *b, const MDR_SFX(mdr
 /* Root of dir*(U - u) in spring k between ta (value < 0) and tb (>= 0):
  * Newton from the secant point, bisection whenever Newton leaves the
  * bracket; converges to the rounding level well inside MDR_ENG_ITER. */
-static bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, uint16_t k,
+static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, uint16_t k,
                                 MDR_T ta, MDR_T fa, MDR_T tb, MDR_T fb, MDR_SFX(mdr_e_pt) *out)
 {
     MDR_T lo = ta, hi = tb, t;
@@ -388,7 +388,7 @@ static bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u
 
 /* Fold in spring k between ta (dU/dt >= 0 side, reached first) and tb
  * (dU/dt < 0): bisection on the sign of dU/dt. */
-static MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_fold)(const MDR_SFX(mdr_e_branch) *b, uint16_t k,
+static MDR_STEP_FN MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_fold)(const MDR_SFX(mdr_e_branch) *b, uint16_t k,
                                              MDR_T ta, MDR_T tb)
 {
     int it;
@@ -413,7 +413,7 @@ enum { MDR_E_SCAN_ROOT, MDR_E_SCAN_FOLD, MDR_E_SCAN_END, MDR_E_SCAN_NOCONV };
 /* Walk from the point p0 in direction dir (+1: a grows) to the first
  * dir*U >= dir*u (strictly > when !folds: the landing of a jump that left a
  * fold where U = u). With folds, stop at the first fold instead. */
-static int MDR_SFX(mdr_e_scan)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, bool folds,
+static MDR_STEP_FN int MDR_SFX(mdr_e_scan)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, bool folds,
                                const MDR_SFX(mdr_e_pt) *p0, MDR_SFX(mdr_e_pt) *out)
 {
     const MDR_T su = (MDR_T)dir * u;
@@ -485,14 +485,14 @@ static int MDR_SFX(mdr_e_scan)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u,
 }
 
 /* Trapezoid of F dd from (d0, F0) to (d1, F1) into the work sum. */
-static void MDR_SFX(mdr_e_work)(MDR_SFX(mdr_engine) *s, MDR_T d0, MDR_T F0, MDR_T d1, MDR_T F1)
+static MDR_STEP_FN void MDR_SFX(mdr_e_work)(MDR_SFX(mdr_engine) *s, MDR_T d0, MDR_T F0, MDR_T d1, MDR_T F1)
 {
     MDR_SFX(mdr_e_kahan)(&s->work, &s->work_c, MDR_K(0.5) * (F0 + F1) * (d1 - d0));
 }
 
 /* The state with the edge at p and the control at u: d from u (pinned
  * relation), F = 2E*(a d - G). For fixed load F is u exactly. */
-static void MDR_SFX(mdr_e_state)(const MDR_SFX(mdr_e_branch) *b, MDR_T E, MDR_T u,
+static MDR_STEP_FN void MDR_SFX(mdr_e_state)(const MDR_SFX(mdr_e_branch) *b, MDR_T E, MDR_T u,
                                  const MDR_SFX(mdr_e_pt) *p, MDR_T *d, MDR_T *F)
 {
     *d = (u + b->ka * p->G) / (b->al + b->ka * p->x);
@@ -500,14 +500,14 @@ static void MDR_SFX(mdr_e_state)(const MDR_SFX(mdr_e_branch) *b, MDR_T E, MDR_T 
 }
 
 /* A refused step: set the sticky flag, leave the state, return the status. */
-static mdr_status MDR_SFX(mdr_e_refuse)(MDR_SFX(mdr_engine) *e, uint8_t flag, mdr_status st)
+static MDR_STEP_FN mdr_status MDR_SFX(mdr_e_refuse)(MDR_SFX(mdr_engine) *e, uint8_t flag, mdr_status st)
 {
     e->flags |= flag;
     return st;
 }
 
 /* One step with the control u on the branch family (al, ka). */
-static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka, MDR_T u,
+static MDR_STEP_FN mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka, MDR_T u,
                                       MDR_SFX(mdr_step) *out)
 {
     const MDR_SFX(mdr_table) *tab = e->tab;
@@ -687,7 +687,7 @@ static mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T al, MDR_T ka
     return MDR_OK;
 }
 
-mdr_status MDR_SFX(mdr_engine_step_d)(MDR_SFX(mdr_engine) *e, MDR_T d, MDR_SFX(mdr_step) *out)
+MDR_STEP_FN mdr_status MDR_SFX(mdr_engine_step_d)(MDR_SFX(mdr_engine) *e, MDR_T d, MDR_SFX(mdr_step) *out)
 {
     if (e == NULL || out == NULL || e->tab == NULL) {
         return MDR_E_NULL;
@@ -698,7 +698,7 @@ mdr_status MDR_SFX(mdr_engine_step_d)(MDR_SFX(mdr_engine) *e, MDR_T d, MDR_SFX(m
     return MDR_SFX(mdr_e_step)(e, MDR_K(1.0), MDR_K(0.0), d, out);
 }
 
-mdr_status MDR_SFX(mdr_engine_step_F)(MDR_SFX(mdr_engine) *e, MDR_T F, MDR_SFX(mdr_step) *out)
+MDR_STEP_FN mdr_status MDR_SFX(mdr_engine_step_F)(MDR_SFX(mdr_engine) *e, MDR_T F, MDR_SFX(mdr_step) *out)
 {
     if (e == NULL || out == NULL || e->tab == NULL) {
         return MDR_E_NULL;
@@ -709,7 +709,7 @@ mdr_status MDR_SFX(mdr_engine_step_F)(MDR_SFX(mdr_engine) *e, MDR_T F, MDR_SFX(m
     return MDR_SFX(mdr_e_step)(e, MDR_K(0.0), MDR_K(1.0), F / (MDR_K(2.0) * e->E), out);
 }
 
-mdr_status MDR_SFX(mdr_engine_step_z)(MDR_SFX(mdr_engine) *e, MDR_T z, MDR_SFX(mdr_step) *out)
+MDR_STEP_FN mdr_status MDR_SFX(mdr_engine_step_z)(MDR_SFX(mdr_engine) *e, MDR_T z, MDR_SFX(mdr_step) *out)
 {
     if (e == NULL || out == NULL || e->tab == NULL) {
         return MDR_E_NULL;

@@ -26,13 +26,14 @@
 #include <stddef.h>
 
 #include "mdr.h"
+#include "mdr_hooks.h"
 
 #define MDR_Q_ITER 64 /* root / fold iteration cap (bisection alone needs 31) */
 
 /* v / 2^s rounded to nearest (ties toward +inf), s >= 1, |v| < 2^62 (0 for
  * s >= 63). Written without >> of a negative value (implementation-defined
  * in C99): for r < 0, ~(~r >> s) is floor(r / 2^s). */
-static int64_t mdr_q_rs(int64_t v, unsigned s)
+MDR_INLINE MDR_STEP_FN int64_t mdr_q_rs(int64_t v, unsigned s)
 {
     int64_t r;
     if (s >= 63u) {
@@ -43,19 +44,19 @@ static int64_t mdr_q_rs(int64_t v, unsigned s)
 }
 
 /* v * 2^s without a left shift of a negative value; |v| 2^s < 2^63 */
-static int64_t mdr_q_ls(int64_t v, unsigned s)
+MDR_INLINE MDR_STEP_FN int64_t mdr_q_ls(int64_t v, unsigned s)
 {
     return v * ((int64_t)1 << s);
 }
 
 /* v * 2^-s for any s in -62..62 (rounded when s > 0) */
-static int64_t mdr_q_sh(int64_t v, int s)
+MDR_INLINE MDR_STEP_FN int64_t mdr_q_sh(int64_t v, int s)
 {
     return s > 0 ? mdr_q_rs(v, (unsigned)s) : s < 0 ? mdr_q_ls(v, (unsigned)-s) : v;
 }
 
 /* int64 -> int32, saturating; sets MDR_FLAG_SAT in *flags when it does */
-static int32_t mdr_q_sat(int64_t v, uint8_t *flags)
+MDR_INLINE MDR_STEP_FN int32_t mdr_q_sat(int64_t v, uint8_t *flags)
 {
     if (v > INT32_MAX) {
         *flags |= MDR_FLAG_SAT;
@@ -69,7 +70,7 @@ static int32_t mdr_q_sat(int64_t v, uint8_t *flags)
 }
 
 /* a + b in int64, saturating (energy sums) */
-static int64_t mdr_q_add(int64_t a, int64_t b, uint8_t *flags)
+MDR_INLINE MDR_STEP_FN int64_t mdr_q_add(int64_t a, int64_t b, uint8_t *flags)
 {
     if (b > 0 && a > INT64_MAX - b) {
         *flags |= MDR_FLAG_SAT;
@@ -100,7 +101,7 @@ typedef struct {
 } mdr_qp;
 
 /* a table value (Q1.30 of Dg or L Dg) in engine units (Q2.29 of D0, L D0) */
-static int32_t mdr_q_tv(const mdr_qb *b, int32_t v)
+MDR_INLINE MDR_STEP_FN int32_t mdr_q_tv(const mdr_qb *b, int32_t v)
 {
     return (int32_t)mdr_q_rs(v, b->sh);
 }
@@ -109,7 +110,7 @@ static int32_t mdr_q_tv(const mdr_qb *b, int32_t v)
  * and its curvature term b_k (Q(fb) of Dg, fb >= 30 chosen per table) enter
  * g and g' directly, not as differences of rounded node values: at
  * n = 1024 g' keeps ~2^-28 of Dg/L where node differences would leave 2^-20. */
-static mdr_qp mdr_q_at(const mdr_qb *b, uint16_t k, int32_t t)
+static MDR_STEP_FN mdr_qp mdr_q_at(const mdr_qb *b, uint16_t k, int32_t t)
 {
     const mdr_node_q31 *n0 = &b->tab->node[k];
     const int32_t one = MDR_Q30_ONE;
@@ -139,7 +140,7 @@ static mdr_qp mdr_q_at(const mdr_qb *b, uint16_t k, int32_t t)
 }
 
 /* the profile exactly at node j */
-static mdr_qp mdr_q_node(const mdr_qb *b, uint16_t j)
+static MDR_STEP_FN mdr_qp mdr_q_node(const mdr_qb *b, uint16_t j)
 {
     const mdr_node_q31 *nj = &b->tab->node[j];
     mdr_qp p;
@@ -153,7 +154,7 @@ static mdr_qp mdr_q_node(const mdr_qb *b, uint16_t j)
 }
 
 /* U at p, Q2.29 (int64: |U| <= 3 units on the table) */
-static int64_t mdr_q_U(const mdr_qb *b, const mdr_qp *p)
+static MDR_STEP_FN int64_t mdr_q_U(const mdr_qb *b, const mdr_qp *p)
 {
     int64_t D = p->g - mdr_q_rs((int64_t)b->c * p->t, 30);
     int64_t phi = mdr_q_rs(p->x * D, 30) - p->G;
@@ -161,7 +162,7 @@ static int64_t mdr_q_U(const mdr_qb *b, const mdr_qp *p)
 }
 
 /* dU/dt at p, Q2.29 (int64): al (2 t g' - c) + ka x (2 t g' - 3 c) */
-static int64_t mdr_q_dU(const mdr_qb *b, const mdr_qp *p)
+static MDR_STEP_FN int64_t mdr_q_dU(const mdr_qb *b, const mdr_qp *p)
 {
     int64_t tg = mdr_q_rs((int64_t)p->t * p->dg, 29);
     return mdr_q_rs(b->al * (tg - b->c) + b->ka * mdr_q_rs(p->x * (tg - 3 * (int64_t)b->c), 30), 30);
@@ -169,7 +170,7 @@ static int64_t mdr_q_dU(const mdr_qb *b, const mdr_qp *p)
 
 /* Root of dir (U - u) in spring k between ta (< 0) and tb (>= 0): Newton
  * from the secant point, bisection whenever it leaves the bracket. */
-static bool mdr_q_root(const mdr_qb *b, int dir, int64_t u, uint16_t k, int32_t ta, int64_t fa,
+static MDR_STEP_FN bool mdr_q_root(const mdr_qb *b, int dir, int64_t u, uint16_t k, int32_t ta, int64_t fa,
                        int32_t tb, int64_t fb, mdr_qp *out)
 {
     int32_t lo = ta, hi = tb, t;
@@ -205,7 +206,7 @@ static bool mdr_q_root(const mdr_qb *b, int dir, int64_t u, uint16_t k, int32_t 
 }
 
 /* Fold in spring k between ta (dU/dt >= 0) and tb (< 0): bisection */
-static mdr_qp mdr_q_fold(const mdr_qb *b, uint16_t k, int32_t ta, int32_t tb)
+static MDR_STEP_FN mdr_qp mdr_q_fold(const mdr_qb *b, uint16_t k, int32_t ta, int32_t tb)
 {
     int it;
     for (it = 0; it < MDR_Q_ITER; it++) {
@@ -228,7 +229,7 @@ enum { MDR_Q_SCAN_ROOT, MDR_Q_SCAN_FOLD, MDR_Q_SCAN_END, MDR_Q_SCAN_NOCONV };
 
 /* Walk from p0 in direction dir to the first dir*U >= dir*u (> when
  * !folds), or with folds to the first fold (mdr_e_scan in mdr_engine_t.c). */
-static int mdr_q_scan(const mdr_qb *b, int dir, int64_t u, bool folds, const mdr_qp *p0,
+static MDR_STEP_FN int mdr_q_scan(const mdr_qb *b, int dir, int64_t u, bool folds, const mdr_qp *p0,
                       mdr_qp *out)
 {
     const int64_t su = dir * u;
@@ -297,7 +298,7 @@ static int mdr_q_scan(const mdr_qb *b, int dir, int64_t u, bool folds, const mdr
 /* ------------------------------------------------------------ the step */
 
 /* Trapezoid of F dd into the work sum: ((F0+F1)/2) (d1-d0), Q2.58 -> Q15.48 */
-static void mdr_q_work(mdr_engine_q31 *s, int32_t d0, int32_t F0, int32_t d1, int32_t F1)
+static MDR_STEP_FN void mdr_q_work(mdr_engine_q31 *s, int32_t d0, int32_t F0, int32_t d1, int32_t F1)
 {
     int64_t avg = mdr_q_rs((int64_t)F0 + F1, 1);
     s->work = mdr_q_add(s->work, mdr_q_rs(avg * ((int64_t)d1 - d0), 10), &s->flags);
@@ -306,7 +307,7 @@ static void mdr_q_work(mdr_engine_q31 *s, int32_t d0, int32_t F0, int32_t d1, in
 /* d and F with the edge at p and the control at u (pinned relation):
  * d = (u + ka G)/(al + ka x) (one int64 division unless ka = 0),
  * F = x d - G (= u exactly at fixed load). */
-static void mdr_q_state(const mdr_qb *b, int64_t u, const mdr_qp *p, int32_t *d, int32_t *F,
+static MDR_STEP_FN void mdr_q_state(const mdr_qb *b, int64_t u, const mdr_qp *p, int32_t *d, int32_t *F,
                         uint8_t *flags)
 {
     if (b->ka == 0) {
@@ -321,12 +322,12 @@ static void mdr_q_state(const mdr_qb *b, int64_t u, const mdr_qp *p, int32_t *d,
 }
 
 /* d + kappa F in D0 units (the base position of the machine as a depth) */
-static int32_t mdr_q_zd(const mdr_engine_q31 *e, int32_t d, int32_t F, uint8_t *flags)
+static MDR_STEP_FN int32_t mdr_q_zd(const mdr_engine_q31 *e, int32_t d, int32_t F, uint8_t *flags)
 {
     return mdr_q_sat(d + mdr_q_rs((int64_t)e->z_k * F, 30u - e->sz), flags);
 }
 
-static mdr_status mdr_q_refuse(mdr_engine_q31 *e, uint8_t flag, mdr_status st)
+static MDR_STEP_FN mdr_status mdr_q_refuse(mdr_engine_q31 *e, uint8_t flag, mdr_status st)
 {
     e->flags |= flag;
     return st;
@@ -334,7 +335,7 @@ static mdr_status mdr_q_refuse(mdr_engine_q31 *e, uint8_t flag, mdr_status st)
 
 /* One step with the control u (Q2.29) on the branch family (al, ka) of
  * control mode ctl; zr is the raw z input of the machine. */
-static mdr_status mdr_q_step(mdr_engine_q31 *e, uint8_t ctl, int32_t al, int32_t ka, int32_t u,
+static MDR_STEP_FN mdr_status mdr_q_step(mdr_engine_q31 *e, uint8_t ctl, int32_t al, int32_t ka, int32_t u,
                              int32_t zr, mdr_step_q31 *out)
 {
     const mdr_table_q31 *tab = e->tab;
@@ -512,7 +513,7 @@ static mdr_status mdr_q_step(mdr_engine_q31 *e, uint8_t ctl, int32_t al, int32_t
 }
 
 /* the documented input range |v| <= 2 units: beyond it saturate and flag */
-static int32_t mdr_q_in(mdr_engine_q31 *e, int32_t v)
+static MDR_STEP_FN int32_t mdr_q_in(mdr_engine_q31 *e, int32_t v)
 {
     if (v > 2 * MDR_Q29_ONE || v < -2 * MDR_Q29_ONE) {
         e->flags |= MDR_FLAG_SAT;
@@ -521,7 +522,7 @@ static int32_t mdr_q_in(mdr_engine_q31 *e, int32_t v)
     return v;
 }
 
-mdr_status mdr_engine_step_d_q31(mdr_engine_q31 *e, int32_t d, mdr_step_q31 *out)
+MDR_STEP_FN mdr_status mdr_engine_step_d_q31(mdr_engine_q31 *e, int32_t d, mdr_step_q31 *out)
 {
     if (e == NULL || out == NULL || e->tab == NULL) {
         return MDR_E_NULL;
@@ -530,7 +531,7 @@ mdr_status mdr_engine_step_d_q31(mdr_engine_q31 *e, int32_t d, mdr_step_q31 *out
     return mdr_q_step(e, MDR_CONTROL_GRIPS, MDR_Q30_ONE, 0, d, d, out);
 }
 
-mdr_status mdr_engine_step_F_q31(mdr_engine_q31 *e, int32_t F, mdr_step_q31 *out)
+MDR_STEP_FN mdr_status mdr_engine_step_F_q31(mdr_engine_q31 *e, int32_t F, mdr_step_q31 *out)
 {
     if (e == NULL || out == NULL || e->tab == NULL) {
         return MDR_E_NULL;
@@ -539,7 +540,7 @@ mdr_status mdr_engine_step_F_q31(mdr_engine_q31 *e, int32_t F, mdr_step_q31 *out
     return mdr_q_step(e, MDR_CONTROL_LOAD, 0, MDR_Q30_ONE, F, F, out);
 }
 
-mdr_status mdr_engine_step_z_q31(mdr_engine_q31 *e, int32_t z, mdr_step_q31 *out)
+MDR_STEP_FN mdr_status mdr_engine_step_z_q31(mdr_engine_q31 *e, int32_t z, mdr_step_q31 *out)
 {
     if (e == NULL || out == NULL || e->tab == NULL) {
         return MDR_E_NULL;

@@ -1,15 +1,59 @@
 /*
- * port/riscv/mdr_port.h: hooks for RV32 (riscv64-unknown-elf-gcc, -march=rv32...).
- * Chosen by -Iport/riscv. With the F extension the float square root is
- * FSQRT.S (needs -fno-math-errno); otherwise lib/'s own routine.
+ * port/riscv/mdr_port.h: hooks for RV32 (riscv64-unknown-elf-gcc,
+ * -march=rv32...). Chosen by -Iport/riscv; compiler flags per core:
+ * port/riscv/port.mk. The hooks lib/ uses and their defaults:
+ * lib/src/mdr_hooks.h.
+ *
+ *  MDR_PORT_SQRT_F32(x)  FSQRT.S with the F extension (needs
+ *                        -fno-math-errno), FSQRT.D with D; otherwise lib/'s
+ *                        own routine.
+ *  MDR_STEP_FN           section MDR_STEP_SECTION when defined (e.g. a
+ *                        tightly coupled memory's ".itim").
+ *  MDR_ASSERT(cond)      compiled out, unless MDR_PORT_ASSERT_HOOK is defined
+ *                        and the firmware provides
+ *                        void mdr_port_assert_failed(const char *file, int line);
+ *  mdr_port_cycles()     the low 32 bits of mcycle (machine mode; user mode
+ *                        code reads `cycle` instead: define
+ *                        MDR_PORT_CYCLES_USER).
  */
 #ifndef MDR_PORT_H
 #define MDR_PORT_H
 
+#include <stdint.h>
+
 #if defined(__riscv_flen) && __riscv_flen >= 32
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
 #endif
+#if defined(__riscv_flen) && __riscv_flen >= 64
+#define MDR_PORT_SQRT_F64(x) __builtin_sqrt(x)
+#endif
 
+#define MDR_INLINE static inline
+
+#ifdef MDR_STEP_SECTION
+#define MDR_STEP_FN __attribute__((section(MDR_STEP_SECTION)))
+#endif
+
+#ifdef MDR_PORT_ASSERT_HOOK
+void mdr_port_assert_failed(const char *file, int line);
+#define MDR_ASSERT(cond) ((cond) ? (void)0 : mdr_port_assert_failed(__FILE__, __LINE__))
+#else
 #define MDR_ASSERT(cond) ((void)0)
+#endif
+
+#define MDR_PORT_CYCLES_MASK 0xFFFFFFFFu
+static inline void mdr_port_cycles_init(void)
+{
+}
+static inline uint32_t mdr_port_cycles(void)
+{
+    uint32_t v;
+#ifdef MDR_PORT_CYCLES_USER
+    __asm__ volatile("rdcycle %0" : "=r"(v));
+#else
+    __asm__ volatile("csrr %0, mcycle" : "=r"(v));
+#endif
+    return v;
+}
 
 #endif /* MDR_PORT_H */

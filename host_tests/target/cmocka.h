@@ -1,0 +1,112 @@
+/*
+ * host_tests/target/cmocka.h: the part of the cmocka API the host tests use
+ * (cmocka_unit_test, cmocka_run_group_tests[_name], assert_true,
+ * assert_false, assert_int_equal, assert_memory_equal, assert_string_equal,
+ * fail, print_message, print_error), for the target builds, where the
+ * Debian cmocka library does not exist. On the include path before the
+ * system's only in target builds (make target-test). It prints the lines
+ * cmocka prints ([ RUN ], [ OK ], [ FAILED ], the summary), so host and
+ * target runs read and compare the same; main's return value is the
+ * number of failed tests, as with cmocka.
+ *
+ * A failed assertion prints where and why, then longjmps out of the test
+ * (tests run one after another; no setup/teardown or state, which the
+ * host tests do not use).
+ */
+#ifndef MDR_TARGET_CMOCKA_H
+#define MDR_TARGET_CMOCKA_H
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+typedef void (*CMUnitTestFunction)(void **state);
+
+struct CMUnitTest {
+    const char *name;
+    CMUnitTestFunction test_func;
+};
+
+#define cmocka_unit_test(f) {#f, f}
+
+static jmp_buf mdr_cm_jmp;
+
+static inline void mdr_cm_fail(const char *file, int line, const char *what)
+{
+    printf("[  ERROR   ] --- %s\n[   LINE   ] --- %s:%d: error: Failure!\n", what, file, line);
+    longjmp(mdr_cm_jmp, 1);
+}
+
+static inline void mdr_cm_int(long long a, long long b, const char *file, int line)
+{
+    char msg[64];
+    if (a != b) {
+        snprintf(msg, sizeof msg, "0x%llx != 0x%llx", (unsigned long long)a, (unsigned long long)b);
+        mdr_cm_fail(file, line, msg);
+    }
+}
+
+#define assert_true(c) ((c) ? (void)0 : mdr_cm_fail(__FILE__, __LINE__, #c))
+#define assert_false(c) (!(c) ? (void)0 : mdr_cm_fail(__FILE__, __LINE__, "!(" #c ")"))
+#define assert_int_equal(a, b) mdr_cm_int((long long)(a), (long long)(b), __FILE__, __LINE__)
+#define assert_memory_equal(a, b, n) \
+    (memcmp((a), (b), (n)) == 0 ? (void)0 : mdr_cm_fail(__FILE__, __LINE__, "memory differs"))
+#define assert_string_equal(a, b) \
+    (strcmp((a), (b)) == 0 ? (void)0 : mdr_cm_fail(__FILE__, __LINE__, "strings differ"))
+#define fail() mdr_cm_fail(__FILE__, __LINE__, "fail()")
+
+static inline void print_message(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+}
+
+static inline void print_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+}
+
+static inline int mdr_cm_run(const struct CMUnitTest *t, size_t n)
+{
+    size_t i, failed = 0;
+    static const char *failed_name[64];
+    printf("[==========] Running %u test(s).\n", (unsigned)n);
+    for (i = 0; i < n; i++) {
+        printf("[ RUN      ] %s\n", t[i].name);
+        if (setjmp(mdr_cm_jmp) == 0) {
+            t[i].test_func(NULL);
+            printf("[       OK ] %s\n", t[i].name);
+        } else {
+            printf("[  FAILED  ] %s\n", t[i].name);
+            if (failed < 64) {
+                failed_name[failed] = t[i].name;
+            }
+            failed++;
+        }
+    }
+    printf("[==========] %u test(s) run.\n", (unsigned)n);
+    printf("[  PASSED  ] %u test(s).\n", (unsigned)(n - failed));
+    if (failed > 0) {
+        printf("[  FAILED  ] %u test(s), listed below:\n", (unsigned)failed);
+        for (i = 0; i < failed && i < 64; i++) {
+            printf("[  FAILED  ] %s\n", failed_name[i]);
+        }
+        printf("\n %u FAILED TEST(S)\n", (unsigned)failed);
+    }
+    return (int)failed;
+}
+
+#define cmocka_run_group_tests(tests, setup, teardown) \
+    ((void)(setup), (void)(teardown), mdr_cm_run((tests), sizeof(tests) / sizeof((tests)[0])))
+#define cmocka_run_group_tests_name(name, tests, setup, teardown) \
+    ((void)(name), cmocka_run_group_tests(tests, setup, teardown))
+
+#endif /* MDR_TARGET_CMOCKA_H */
