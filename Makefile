@@ -5,8 +5,10 @@
 #   make test       everything that proves the library (see `test:` below)
 #   make demo       AFM pull-off demo (prints a table, writes CSV/PNG)
 #   make ref-check  regenerate the reference vectors with GSL and diff them
-#   make size       flash/RAM of the library per cross configuration
-#   make cross      cross builds + symbol checks (Cortex-M4F, Cortex-M0, RV32)
+#   make size       flash, RAM, instance sizes and step stack depth per core
+#   make cross      cross builds + symbol checks (Cortex-M0/M4F/M7, RV32IMAC/IMAFC)
+#   make target-test  the target-independent tests on QEMU (Cortex-M4F, M3)
+#   make bench      step time on the host, instructions per step on the M4
 #   make tables     regenerate lib/src/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
 #
@@ -32,7 +34,7 @@ LIB_SRC := $(MDR_SRC_ALL)
 LIB_DEPS := $(MDR_DEPS) $(wildcard lib/src/*.c port/*/mdr_port.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
@@ -99,14 +101,16 @@ san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 
 # The README's test command. Installs what is missing (deps), then: host
 # tests (unit, lib vs committed ref vectors, ref vs closed forms, lib vs GSL
-# directly, CLI), the same under ASan+UBSan, and the cross builds with their
-# symbol checks.
+# directly, CLI), the same under ASan+UBSan, the q31 bit-exactness across
+# compilers, the cross builds with their symbol checks, and the target tests
+# on QEMU.
 test: deps
 	$(MAKE) --no-print-directory host-tests
 	$(MAKE) --no-print-directory san-tests
 	$(MAKE) --no-print-directory q31-exact
 	$(MAKE) --no-print-directory cross
-	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) q31-exact $(CROSS_CFGS)) passed, 0 failed"
+	$(MAKE) --no-print-directory target-test
+	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 # The q31 step is integer arithmetic: the same inputs must give the same
 # outputs whatever the compiler and optimisation level (a difference means
@@ -243,8 +247,70 @@ size: cross
 	      n = split(ext, x, " "); printf "%-10s %s %5d   %s%s\n", k, a, $$2, $$3, (n ? sprintf("  + %d libgcc/mem helpers", n) : "")}'; \
 	 done; done
 
+# ---- target tests: the host suite's target-independent core on QEMU ----------
+# Built for the MPS2 boards with port/cortex-m (startup, linker script,
+# semihosting) and run by port/cortex-m/run-qemu: on the Cortex-M4F
+# (mps2-an386) the unit tests, the library against the committed ref/
+# vectors (read from ref/vectors through semihosting), the engine tests and
+# the q31 tests; on the Cortex-M3 (mps2-an385, no FPU) the q31 tests with
+# the step placed in RAM (MDR_STEP_SECTION=".ramfunc"). q31_trace must
+# print the host's fingerprint on both: the q31 step is bit-exact across
+# cores. Each test prints the same cmocka lines as on the host
+# (host_tests/target/cmocka.h).
+TGT_m4 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m4f) -Iport/cortex-m
+TGT_m3 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m3) -Iport/cortex-m -DMDR_STEP_SECTION='".ramfunc"'
+QEMU_m4 := mps2-an386
+QEMU_m3 := mps2-an385
+TGT_TESTS_m4 := test_unit test_vectors test_engine test_q31 q31_trace
+TGT_TESTS_m3 := test_q31 q31_trace
+TGT_TEST_CFLAGS := -std=c99 -D_GNU_SOURCE -DMDR_TARGET_TEST -O2 -Wall -Wextra -Werror \
+                   -Ihost_tests/target -Ilib/include -Iref
+TGT_LIB_OBJS := mdr_f32 mdr_f64 mdr_q31 mdr_status
+
+define target_rules
+$(B)/tgt-$(1)/libmdr.a: $(LIB_DEPS)
+	@mkdir -p $(B)/tgt-$(1)
+	for o in $(TGT_LIB_OBJS); do $(TGT_$(1)) $(MDR_REQUIRED_CFLAGS) -O2 $(WARN) -Ilib/include \
+	  -c lib/src/$$$$o.c -o $(B)/tgt-$(1)/$$$$o.o || exit 1; done
+	rm -f $$@ && $(MDR_CM_PREFIX)ar rcs $$@ $(addprefix $(B)/tgt-$(1)/,$(addsuffix .o,$(TGT_LIB_OBJS)))
+$(B)/tgt-$(1)/%.elf: host_tests/%.c $(B)/tgt-$(1)/libmdr.a $(B)/host/gen_tip.c host_tests/target/cmocka.h $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
+	$(TGT_$(1)) $(TGT_TEST_CFLAGS) $$< $$(if $$(filter test_engine,$$*),$(B)/host/gen_tip.c) $(MDR_CM_STARTUP) \
+	  $(B)/tgt-$(1)/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $$@
+# one QEMU run: its output in .log, a .run stamp when it passed
+$(B)/tgt-$(1)/%.run: $(B)/tgt-$(1)/%.elf $(B)/host/q31_trace $(B)/host/test_vectors
+	@rm -f $$@; port/cortex-m/run-qemu -M $(QEMU_$(1)) -t 600 $$< > $(B)/tgt-$(1)/$$*.log 2>&1 || \
+	  { cat $(B)/tgt-$(1)/$$*.log; echo "target $(QEMU_$(1)): $$* failed"; exit 1; }
+	@if [ $$* = q31_trace ]; then \
+	  ./$(B)/host/q31_trace > $(B)/tgt-$(1)/q31_trace.host; \
+	  cmp -s $(B)/tgt-$(1)/q31_trace.host $(B)/tgt-$(1)/q31_trace.log || \
+	    { echo "target $(QEMU_$(1)): q31 outputs differ from the host's"; cat $(B)/tgt-$(1)/q31_trace.*; exit 1; }; \
+	  echo "q31 outputs identical to the host's" >> $(B)/tgt-$(1)/q31_trace.log; fi
+	@if [ $$* = test_vectors ]; then \
+	  ./$(B)/host/test_vectors 2>/dev/null | grep ' f32 ' > $(B)/tgt-$(1)/f32.host; \
+	  grep ' f32 ' $(B)/tgt-$(1)/test_vectors.log | diff $(B)/tgt-$(1)/f32.host - || \
+	    { echo "target $(QEMU_$(1)): f32 errors differ from the host's"; exit 1; }; \
+	  echo "f32 rows identical to the host's (f32 results bit for bit)" >> $(B)/tgt-$(1)/test_vectors.log; fi
+	@touch $$@
+endef
+$(foreach t,m4 m3,$(eval $(call target_rules,$(t))))
+
+$(B)/host/q31_trace: host_tests/q31_trace.c $(B)/host/libmdr.a
+	$(HOSTCC) -std=c99 $(WARN) -Ilib/include -O2 $< $(B)/host/libmdr.a -o $@
+
+TGT_RUNS := $(foreach t,m4 m3,$(addprefix $(B)/tgt-$(t)/,$(addsuffix .run,$(TGT_TESTS_$(t)))))
+target-test:
+	@rm -f $(TGT_RUNS)
+	@$(MAKE) --no-print-directory -j2 $(TGT_RUNS) || { echo "target-test: failed"; exit 1; }
+	@for t in m4 m3; do m=$$(case $$t in m4) echo $(QEMU_m4);; m3) echo $(QEMU_m3);; esac); \
+	  for x in $$(case $$t in m4) echo "$(TGT_TESTS_m4)";; m3) echo "$(TGT_TESTS_m3)";; esac); do \
+	    echo "== target $$m: $$x"; cat $(B)/tgt-$$t/$$x.log; done; done
+	@a=$$($(MDR_CM_PREFIX)nm $(B)/tgt-m3/q31_trace.elf | awk '$$3=="mdr_engine_step_d_q31"{print $$1}'); \
+	  case $$a in 2*) echo "target mps2-an385: the q31 step ran from RAM (MDR_STEP_SECTION, at 0x$$a)";; \
+	  *) echo "target mps2-an385: MDR_STEP_SECTION did not place the step in RAM (0x$$a)"; exit 1;; esac
+
 # ---- dependencies --------------------------------------------------------------
-DEB_PKGS := gcc clang make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
+DEB_PKGS := gcc clang make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
+            qemu-system-arm
 deps:
 	@missing=""; \
 	for p in $(DEB_PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \

@@ -18,6 +18,11 @@
  * f32 result is compared with the reference moved to those inputs (first
  * order in the radius for curves; through the f64 library for g).
  * Prints the largest error per profile and arithmetic (README figures).
+ *
+ * F64_EVERY: the f64 checks run on every F64_EVERY-th scene (1 on the host;
+ * make target-test builds with 16: on a Cortex-M4 double is soft-float, and
+ * the f64 critical states of every scene would take minutes under QEMU).
+ * The f32 checks always cover every row.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -32,6 +37,14 @@
 
 #ifndef MDR_VECTORS_DIR
 #define MDR_VECTORS_DIR "ref/vectors"
+#endif
+
+#ifndef F64_EVERY
+#ifdef MDR_TARGET_TEST
+#define F64_EVERY 16
+#else
+#define F64_EVERY 1
+#endif
 #endif
 
 #define TOL_CRIT_F32 2e-6
@@ -78,6 +91,17 @@ static int read_row(FILE *f, double *v, int n)
     return 1;
 }
 
+/* x rounded to float and back: the value a float caller passes. Through a
+ * volatile: GCC 12.2 -O2 (x86-64) dropped the rounding of
+ * {(double)(float)v[2], (double)(float)v[3], ...} when its SLP vectoriser
+ * paired it with the float conversions of the same values (seen here; with
+ * -fno-tree-slp-vectorize the rounding is kept). */
+static double fl(double x)
+{
+    volatile float f = (float)x;
+    return f;
+}
+
 static void note(int kind, int ar, int q, double e)
 {
     if (e > worst[kind][ar][q]) {
@@ -115,29 +139,32 @@ static void critical_vs_ref(void **state)
         mdr_critstate_f64 o64;
         float p32[3] = {(float)v[2], (float)v[3], (float)v[4]};
         double p64[3] = {v[2], v[3], v[4]};
+        int f64 = scene % F64_EVERY == 0;
         rows++;
         assert_int_equal(mdr_contact_init_f32(&c32, (uint8_t)kind, p32, (float)v[5], (float)v[6]), MDR_OK);
-        assert_int_equal(mdr_contact_init_f64(&c64, (uint8_t)kind, p64, v[5], v[6]), MDR_OK);
         assert_int_equal(mdr_critical_f32(&c32, (uint8_t)ctl, (float)v[8], (float)v[9], &o32), MDR_OK);
-        assert_int_equal(mdr_critical_f64(&c64, (uint8_t)ctl, v[8], v[9], &o64), MDR_OK);
         {
             double ea32 = ra > 0 ? fabs(o32.a - ra) / ra : fabs((double)o32.a);
             double eF32 = rF != 0 ? fabs(o32.F - rF) / fabs(rF) : fabs((double)o32.F);
             double ed32 = dscale > 0 ? fabs(o32.d - rd) / dscale : fabs((double)o32.d);
-            double ea64 = ra > 0 ? fabs(o64.a - ra) / ra : fabs(o64.a);
-            double eF64 = rF != 0 ? fabs(o64.F - rF) / fabs(rF) : fabs(o64.F);
-            double ed64 = dscale > 0 ? fabs(o64.d - rd) / dscale : fabs(o64.d);
-            double e32 = fmax(ea32, fmax(eF32, ed32)), e64 = fmax(ea64, fmax(eF64, ed64));
-            note(kind, 0, 0, e32);
-            note(kind, 1, 0, e64);
+            note(kind, 0, 0, fmax(ea32, fmax(eF32, ed32)));
             check(ea32, TOL_CRIT_F32, "critical a", scene, ctl, 0);
             check(eF32, TOL_CRIT_F32, "critical F", scene, ctl, 0);
             check(ed32, TOL_CRIT_F32, "critical d", scene, ctl, 0);
+            assert_int_equal(o32.jumps, (int)v[13]);
+        }
+        if (f64) {
+            double ea64, eF64, ed64;
+            assert_int_equal(mdr_contact_init_f64(&c64, (uint8_t)kind, p64, v[5], v[6]), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&c64, (uint8_t)ctl, v[8], v[9], &o64), MDR_OK);
+            ea64 = ra > 0 ? fabs(o64.a - ra) / ra : fabs(o64.a);
+            eF64 = rF != 0 ? fabs(o64.F - rF) / fabs(rF) : fabs(o64.F);
+            ed64 = dscale > 0 ? fabs(o64.d - rd) / dscale : fabs(o64.d);
+            note(kind, 1, 0, fmax(ea64, fmax(eF64, ed64)));
             check(ea64, TOL_CRIT_F64, "critical a", scene, ctl, 1);
             check(eF64, TOL_CRIT_F64, "critical F", scene, ctl, 1);
             check(ed64, TOL_CRIT_F64, "critical d", scene, ctl, 1);
             assert_int_equal(o64.jumps, (int)v[13]);
-            assert_int_equal(o32.jumps, (int)v[13]);
         }
     }
     fclose(f);
@@ -146,7 +173,7 @@ static void critical_vs_ref(void **state)
 }
 
 struct curve_acc {
-    int scene, kind, n;
+    int scene, kind, n, f64;
     double maxF, maxd, errF[2], errd[2];
 };
 
@@ -156,7 +183,7 @@ static void flush_curve(struct curve_acc *c)
     if (c->n == 0) {
         return;
     }
-    for (ar = 0; ar < 2; ar++) {
+    for (ar = 0; ar < 1 + c->f64; ar++) {
         double eF = c->errF[ar] / c->maxF, ed = c->errd[ar] / c->maxd;
         double tol = ar ? TOL_CURVE_F64 : TOL_CURVE_F32;
         note(c->kind, ar, 1, eF);
@@ -170,7 +197,7 @@ static void curves_vs_ref(void **state)
 {
     double v[14];
     int rc, rows = 0;
-    struct curve_acc acc = {-1, 0, 0, 0, 0, {0, 0}, {0, 0}};
+    struct curve_acc acc = {-1, 0, 0, 0, 0, 0, {0, 0}, {0, 0}};
     FILE *f = open_vec("curves.csv");
     char skip[512];
     mdr_contact_f32 c32;
@@ -194,12 +221,17 @@ static void curves_vs_ref(void **state)
             acc.scene = scene;
             acc.kind = kind;
             acc.n = 0;
+            acc.f64 = scene % F64_EVERY == 0;
             acc.maxF = acc.maxd = acc.errF[0] = acc.errF[1] = acc.errd[0] = acc.errd[1] = 0;
             assert_int_equal(mdr_contact_init_f32(&c32, (uint8_t)kind, p32, (float)v[5], (float)v[6]), MDR_OK);
             assert_int_equal(mdr_contact_init_f64(&c64, (uint8_t)kind, p64, v[5], v[6]), MDR_OK);
         }
         assert_int_equal(mdr_eq_f32(&c32, (float)a, &e32), MDR_OK);
-        assert_int_equal(mdr_eq_f64(&c64, a, &e64), MDR_OK);
+        if (acc.f64) {
+            assert_int_equal(mdr_eq_f64(&c64, a, &e64), MDR_OK);
+            acc.errF[1] = fmax(acc.errF[1], fabs(e64.F - v[9]));
+            acc.errd[1] = fmax(acc.errd[1], fabs(e64.d - v[8]));
+        }
         /* f32 is evaluated at the float radius: compare at that radius to
          * first order, F(af) = F(a) + F'(a)(af - a) */
         {
@@ -210,8 +242,6 @@ static void curves_vs_ref(void **state)
             acc.maxd = fmax(acc.maxd, fabs(v[8]));
             acc.errF[0] = fmax(acc.errF[0], fabs(e32.F - rF32));
             acc.errd[0] = fmax(acc.errd[0], fabs(e32.d - rd32));
-            acc.errF[1] = fmax(acc.errF[1], fabs(e64.F - v[9]));
-            acc.errd[1] = fmax(acc.errd[1], fabs(e64.d - v[8]));
         }
         if (v[12] > 0) {
             double da = (double)(float)a - a;
@@ -232,19 +262,20 @@ static void curves_vs_ref(void **state)
              * at the float inputs is ref + (f64 lib at float inputs - f64 lib
              * at double inputs): the f64 library agrees with ref to 1e-14. */
             {
-                double pr[3] = {(double)(float)v[2], (double)(float)v[3], (double)(float)v[4]}, gr;
+                double pr[3] = {fl(v[2]), fl(v[3]), fl(v[4])}, gr;
                 mdr_contact_f64 cr;
-                assert_int_equal(mdr_contact_init_f64(&cr, (uint8_t)kind, pr, (double)(float)v[5],
-                                                      (double)(float)v[6]), MDR_OK);
-                assert_int_equal(mdr_profile_eval_f64(&cr, (double)(float)a, &gr, NULL, NULL), MDR_OK);
+                assert_int_equal(mdr_contact_init_f64(&cr, (uint8_t)kind, pr, fl(v[5]), fl(v[6])), MDR_OK);
+                assert_int_equal(mdr_profile_eval_f64(&cr, fl(a), &gr, NULL, NULL), MDR_OK);
                 eg32 = fabs(g32 - (v[12] + (gr - g64))) / gs;
             }
             (void)da;
             eg64 = fmax(fabs(g64 - v[12]) / gs, fabs(dg64 - v[13]) / dgs);
             note(kind, 0, 3, eg32);
-            note(kind, 1, 3, eg64);
             check(eg32, TOL_G_F32, "g", scene, 0, 0);
-            check(eg64, TOL_G_F64, "g, g'", scene, 0, 1);
+            if (acc.f64) {
+                note(kind, 1, 3, eg64);
+                check(eg64, TOL_G_F64, "g, g'", scene, 0, 1);
+            }
         }
     }
     flush_curve(&acc);

@@ -76,7 +76,7 @@ static inline void print_error(const char *fmt, ...)
 
 static inline int mdr_cm_run(const struct CMUnitTest *t, size_t n)
 {
-    size_t i, failed = 0;
+    volatile size_t i, failed = 0;
     static const char *failed_name[64];
     printf("[==========] Running %u test(s).\n", (unsigned)n);
     for (i = 0; i < n; i++) {
