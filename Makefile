@@ -306,6 +306,8 @@ $(foreach t,m4 m3,$(eval $(call target_rules,$(t))))
 $(B)/host/q31_trace: host_tests/q31_trace.c $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include -O2 $< $(B)/host/libmdr.a -o $@
 
+# keep the programs (intermediate files of the .run rules) for nm and reruns
+.PRECIOUS: $(B)/tgt-m4/%.elf $(B)/tgt-m3/%.elf
 TGT_RUNS := $(foreach t,m4 m3,$(addprefix $(B)/tgt-$(t)/,$(addsuffix .run,$(TGT_TESTS_$(t)))))
 target-test:
 	@rm -f $(TGT_RUNS)

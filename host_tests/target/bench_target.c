@@ -40,7 +40,6 @@ static mdr_node_f32 n32[4097];
 static mdr_node_q31 nq[4097];
 static float in_f32[STEPS + 1];
 static int32_t in_q31[STEPS + 1];
-static volatile float sink;
 
 static uint32_t ticks_since(uint32_t t0)
 {
@@ -82,46 +81,34 @@ static double path(long i)
     return i <= q ? 0.1e-6 * (double)i / (double)q : 0.1e-6 - 0.4e-6 * (double)(i - q) / (double)(STEPS - q);
 }
 
-/* one cycle of each engine; returns ticks, *stack the measured depth */
-__attribute__((noinline)) static uint32_t cycle_f32(mdr_engine_f32 *e, uint32_t *stack)
-{
-    mdr_step_f32 o;
-    uint32_t *top, t0;
-    long i;
-    float acc = 0;
-    PAINT_BELOW_SP(top);
-    t0 = mdr_port_cycles();
-    for (i = 1; i <= STEPS; i++) {
-        if (mdr_engine_step_d_f32(e, in_f32[i], &o) != MDR_OK) {
-            return 0;
-        }
-        acc += o.F;
+/* one cycle of an engine (inputs in_##SFX); returns ticks, *stack the
+ * measured depth. The outputs are folded into acc (type T, operator OP=)
+ * so that no step is optimised away, at one instruction per step. */
+#define CYCLE(SFX, T, OP)                                                              \
+    __attribute__((noinline)) static uint32_t cycle_##SFX(mdr_engine_##SFX *e,         \
+                                                          uint32_t *stack)              \
+    {                                                                                   \
+        mdr_step_##SFX o;                                                               \
+        uint32_t *top, t0;                                                              \
+        long i;                                                                         \
+        T acc = 0;                                                                      \
+        PAINT_BELOW_SP(top);                                                            \
+        t0 = mdr_port_cycles();                                                         \
+        for (i = 1; i <= STEPS; i++) {                                                  \
+            if (mdr_engine_step_d_##SFX(e, in_##SFX[i], &o) != MDR_OK) {                \
+                return 0;                                                               \
+            }                                                                           \
+            acc OP o.F;                                                                 \
+        }                                                                               \
+        t0 = ticks_since(t0);                                                           \
+        sink_##SFX = acc;                                                               \
+        *stack = painted_used(top);                                                     \
+        return t0;                                                                      \
     }
-    t0 = ticks_since(t0);
-    sink = acc;
-    *stack = painted_used(top);
-    return t0;
-}
-
-__attribute__((noinline)) static uint32_t cycle_q31(mdr_engine_q31 *e, uint32_t *stack)
-{
-    mdr_step_q31 o;
-    uint32_t *top, t0;
-    long i;
-    int32_t acc = 0;
-    PAINT_BELOW_SP(top);
-    t0 = mdr_port_cycles();
-    for (i = 1; i <= STEPS; i++) {
-        if (mdr_engine_step_d_q31(e, in_q31[i], &o) != MDR_OK) {
-            return 0;
-        }
-        acc ^= o.F;
-    }
-    t0 = ticks_since(t0);
-    sink = (float)acc;
-    *stack = painted_used(top);
-    return t0;
-}
+static volatile float sink_f32;
+static volatile int32_t sink_q31;
+CYCLE(f32, float, +=)
+CYCLE(q31, int32_t, ^=)
 
 int main(void)
 {

@@ -682,6 +682,7 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T 
         !MDR_SFX(mdr_m_isfinite)(o.z)) {
         return MDR_E_OVERFLOW;
     }
+    MDR_ASSERT(s.k < tab->n); /* the edge lies in spring k: x_k <= a <= x_{k+1} */
     *e = s;
     *out = o;
     return MDR_OK;

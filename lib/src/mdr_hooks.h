@@ -10,11 +10,14 @@
  *   MDR_INLINE     qualifiers of the small helpers of the step (default
  *                  `static inline`)
  *   MDR_STEP_FN    attribute of every function on the step path (the public
- *                  step functions and what they call): a section such as
- *                  ".ramfunc" or ".itcm" to run the step from RAM; default
- *                  none. The port headers set it from MDR_STEP_SECTION.
+ *                  step functions and what they call); default: section
+ *                  MDR_STEP_SECTION when the build defines it (a string
+ *                  literal such as ".ramfunc" or ".itcm", to run the step
+ *                  from RAM), else none.
  *   MDR_ASSERT(c)  internal invariants (never input checks: bad input is a
- *                  status code); default compiled out.
+ *                  status code); default: compiled out, or, when
+ *                  MDR_PORT_ASSERT_HOOK is defined, a call of the firmware's
+ *                  void mdr_port_assert_failed(const char *file, int line).
  */
 #ifndef MDR_HOOKS_H
 #define MDR_HOOKS_H
@@ -26,11 +29,20 @@
 #endif
 
 #ifndef MDR_STEP_FN
+#ifdef MDR_STEP_SECTION
+#define MDR_STEP_FN __attribute__((section(MDR_STEP_SECTION)))
+#else
 #define MDR_STEP_FN
+#endif
 #endif
 
 #ifndef MDR_ASSERT
+#ifdef MDR_PORT_ASSERT_HOOK
+void mdr_port_assert_failed(const char *file, int line);
+#define MDR_ASSERT(cond) ((cond) ? (void)0 : mdr_port_assert_failed(__FILE__, __LINE__))
+#else
 #define MDR_ASSERT(cond) ((void)0)
+#endif
 #endif
 
 #endif /* MDR_HOOKS_H */

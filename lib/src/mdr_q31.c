@@ -507,6 +507,7 @@ static MDR_STEP_FN mdr_status mdr_q_step(mdr_engine_q31 *e, uint8_t ctl, int32_t
         o.d0 = o.d1 = d;
         o.F0 = o.F1 = F;
     }
+    MDR_ASSERT(s.k < tab->n); /* the edge lies in spring k: x_k <= a <= x_{k+1} */
     *e = s;
     *out = o;
     return MDR_OK;

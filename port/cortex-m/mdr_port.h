@@ -9,14 +9,13 @@
  *                        routine. Double precision: always lib/'s routine
  *                        (no Cortex-M4/M7-SP core has a double FPU; the
  *                        M7-DP's VSQRT.F64 via MDR_PORT_SQRT_F64 if wanted).
- *  MDR_STEP_FN           places the step path in section MDR_STEP_SECTION
- *                        when the build defines it, e.g.
- *                        -DMDR_STEP_SECTION='".ramfunc"' (RAM, copied by
- *                        the startup code with .data: port/cortex-m/mps2.ld)
- *                        or '".itcm"' on an M7 whose linker script has one.
- *  MDR_ASSERT(cond)      compiled out, unless the firmware defines
- *                        MDR_PORT_ASSERT_HOOK and provides
- *                        void mdr_port_assert_failed(const char *file, int line);
+ *  MDR_STEP_FN, MDR_ASSERT  the defaults of lib/src/mdr_hooks.h: the step
+ *                        path in section MDR_STEP_SECTION when the build
+ *                        defines it, e.g. -DMDR_STEP_SECTION='".ramfunc"'
+ *                        (RAM, copied by the startup code with .data:
+ *                        port/cortex-m/mps2.ld) or '".itcm"' on an M7 whose
+ *                        linker script has one; asserts compiled out unless
+ *                        MDR_PORT_ASSERT_HOOK.
  *  mdr_port_cycles_init(), mdr_port_cycles()
  *                        a cycle counter for benchmarks (not used by lib/):
  *                        DWT CYCCNT (32 bits) on ARMv7-M/ARMv8-M mainline;
@@ -32,19 +31,6 @@
 
 #if defined(__ARM_FP) && (__ARM_FP & 4)
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
-#endif
-
-#define MDR_INLINE static inline
-
-#ifdef MDR_STEP_SECTION
-#define MDR_STEP_FN __attribute__((section(MDR_STEP_SECTION)))
-#endif
-
-#ifdef MDR_PORT_ASSERT_HOOK
-void mdr_port_assert_failed(const char *file, int line);
-#define MDR_ASSERT(cond) ((cond) ? (void)0 : mdr_port_assert_failed(__FILE__, __LINE__))
-#else
-#define MDR_ASSERT(cond) ((void)0)
 #endif
 
 /* memory-mapped registers of the System Control Space (ARMv6-M/v7-M ARM) */

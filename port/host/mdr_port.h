@@ -6,8 +6,7 @@
  *  MDR_PORT_SQRT_F32/F64(x)  the compiler builtin: one instruction with
  *                            -fno-math-errno (the Makefile sets it). Define
  *                            MDR_PORT_OWN_SQRT to test lib/'s own routine.
- *  MDR_STEP_FN               section of the step path: MDR_STEP_SECTION
- *                            if defined (a string literal), else none.
+ *  MDR_STEP_FN               the default (lib/src/mdr_hooks.h).
  *  MDR_ASSERT(cond)          internal invariants: trap on the host (the
  *                            tests and sanitizer builds see any violation).
  *  mdr_port_cycles()         a free-running counter for benchmarks (not used
@@ -22,12 +21,6 @@
 #ifndef MDR_PORT_OWN_SQRT
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
 #define MDR_PORT_SQRT_F64(x) __builtin_sqrt(x)
-#endif
-
-#define MDR_INLINE static inline
-
-#ifdef MDR_STEP_SECTION
-#define MDR_STEP_FN __attribute__((section(MDR_STEP_SECTION)))
 #endif
 
 #define MDR_ASSERT(cond) ((cond) ? (void)0 : __builtin_trap())

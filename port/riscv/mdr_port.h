@@ -7,11 +7,10 @@
  *  MDR_PORT_SQRT_F32(x)  FSQRT.S with the F extension (needs
  *                        -fno-math-errno), FSQRT.D with D; otherwise lib/'s
  *                        own routine.
- *  MDR_STEP_FN           section MDR_STEP_SECTION when defined (e.g. a
- *                        tightly coupled memory's ".itim").
- *  MDR_ASSERT(cond)      compiled out, unless MDR_PORT_ASSERT_HOOK is defined
- *                        and the firmware provides
- *                        void mdr_port_assert_failed(const char *file, int line);
+ *  MDR_STEP_FN, MDR_ASSERT  the defaults of lib/src/mdr_hooks.h (section
+ *                        MDR_STEP_SECTION if defined, e.g. a tightly coupled
+ *                        memory's ".itim"; asserts off unless
+ *                        MDR_PORT_ASSERT_HOOK).
  *  mdr_port_cycles()     the low 32 bits of mcycle (machine mode; user mode
  *                        code reads `cycle` instead: define
  *                        MDR_PORT_CYCLES_USER).
@@ -26,19 +25,6 @@
 #endif
 #if defined(__riscv_flen) && __riscv_flen >= 64
 #define MDR_PORT_SQRT_F64(x) __builtin_sqrt(x)
-#endif
-
-#define MDR_INLINE static inline
-
-#ifdef MDR_STEP_SECTION
-#define MDR_STEP_FN __attribute__((section(MDR_STEP_SECTION)))
-#endif
-
-#ifdef MDR_PORT_ASSERT_HOOK
-void mdr_port_assert_failed(const char *file, int line);
-#define MDR_ASSERT(cond) ((cond) ? (void)0 : mdr_port_assert_failed(__FILE__, __LINE__))
-#else
-#define MDR_ASSERT(cond) ((void)0)
 #endif
 
 #define MDR_PORT_CYCLES_MASK 0xFFFFFFFFu
