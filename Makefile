@@ -183,8 +183,10 @@ CORE_rv32imac := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imac) -Iport/riscv
 CORE_rv32imafc := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imafc) -Iport/riscv
 CROSS_CORES := m0 m4f m7 rv32imac rv32imafc
 # core-arithmetic: Cortex-M0 runs q31, the M7 f32, the M4F and RV32 both
-CROSS_CFGS := m0-q31 m4f-f32 m4f-q31 m7-f32 rv32imac-f32 rv32imac-q31 rv32imafc-f32 rv32imafc-q31
+# (m4f-f32nostress: the f32 program without the stress functions)
+CROSS_CFGS := m0-q31 m4f-f32 m4f-f32nostress m4f-q31 m7-f32 rv32imac-f32 rv32imac-q31 rv32imafc-f32 rv32imafc-q31
 LC_f32 := -DMDR_LC_F32 -DMDR_LC_STRESS
+LC_f32nostress := -DMDR_LC_F32
 LC_q31 := -DMDR_LC_Q31
 # the tools of a core (binutils prefix)
 xtool = $(if $(filter rv%,$(1)),$(MDR_RV_PREFIX),$(MDR_CM_PREFIX))$(2)
@@ -237,11 +239,11 @@ cross: $(foreach c,$(CROSS_CFGS),$(B)/$(c)/link_check.elf)
 # the core, and the worst stack depth of the step functions from the call
 # graph (port/stack_depth.awk; libgcc helpers listed, not counted).
 size: cross
-	@printf '%-14s %7s %7s   %s\n' config flash "lib RAM" "program (port/link_check.c, --gc-sections)"
+	@printf '%-16s %7s %7s   %s\n' config flash "lib RAM" "program (port/link_check.c, --gc-sections)"
 	@for c in $(CROSS_CFGS); do \
 	  k=$${c%%-*}; a=$${c#*-}; sz=$$(case $$k in rv*) echo $(MDR_RV_PREFIX)size;; *) echo $(MDR_CM_PREFIX)size;; esac); \
 	  ram=$$($$sz $(B)/$$k/libmdr.a | awk 'NR>1{s+=$$2+$$3} END{print s}'); \
-	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c -v r=$$ram -v a=$$a 'NR>1{printf "%-14s %7d %7d   %s\n",c,$$1+$$2,r,(a=="f32"?"all profiles, closed forms, critical states, stress, tables, engine":"all profiles: table from a profile, q31 conversion, float init, q31 steps")}'; \
+	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c -v r=$$ram -v a=$$a 'NR>1{printf "%-16s %7d %7d   %s\n",c,$$1+$$2,r,(a=="f32"?"all profiles, closed forms, critical states, stress, tables, engine":a=="f32nostress"?"the same without the stress functions":"all profiles: table from a profile, q31 conversion, float init, q31 steps")}'; \
 	done
 	@echo; printf '%-10s %s\n' core "instance sizes in bytes (sizeof on the core)"
 	@for k in $(CROSS_CORES); do \
