@@ -42,22 +42,16 @@ void *memset(void *dst, int v, size_t n)
 
 volatile float mdr_link_sink;
 
-/* a contact of profile `kind` (the loop over kinds keeps every profile's
- * code; a build with MDR_PROFILES of one profile keeps only that one) */
-static mdr_status lc_contact(mdr_contact_f32 *c, uint8_t kind)
-{
-    static const float p[3] = {1e-6f, 2e-7f, 1e-5f};
-    return mdr_contact_init_f32(c, kind, p, 1e9f, 0.1f);
-}
-
 void link_check_entry(void)
 {
+    static const float p[3] = {1e-6f, 2e-7f, 1e-5f};
     static mdr_node_f32 nodes[MDR_TABLE_NODES(16)];
     mdr_contact_f32 c;
     mdr_table_f32 t;
     uint8_t kind;
+    /* every profile kind: each one's code is linked */
     for (kind = MDR_PROFILE_PARABOLOID; kind <= MDR_PROFILE_WAVY; kind++) {
-        if (lc_contact(&c, kind) != MDR_OK ||
+        if (mdr_contact_init_f32(&c, kind, p, 1e9f, 0.1f) != MDR_OK ||
             mdr_table_init_profile_f32(&t, nodes, 16, &c, 1e-7f) != MDR_OK) {
             continue;
         }

@@ -42,16 +42,6 @@ void mdr_fault_handler(void)
     mdr_sh_exit(3);
 }
 
-/* minimal newlib hooks for -nostartfiles: no C++ constructors to run */
-void _init(void);
-void _fini(void);
-void _init(void)
-{
-}
-void _fini(void)
-{
-}
-
 typedef void (*mdr_vector)(void);
 
 /* initial stack pointer, reset, then NMI .. SysTick (15 entries) */
