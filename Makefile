@@ -8,7 +8,7 @@
 #   make size       flash, RAM, instance sizes and step stack depth per core
 #   make cross      cross builds + symbol checks (Cortex-M0/M4F/M7, RV32IMAC/IMAFC)
 #   make target-test  the target-independent tests on QEMU (Cortex-M4F, M3)
-#   make bench      step time on the host, instructions per step on the M4
+#   make bench      step time on the host, instructions per step on the M4F and M3
 #   make tables     regenerate lib/src/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
 #
@@ -218,21 +218,17 @@ $(foreach c,$(CROSS_CORES),$(eval $(call core_rules,$(c))))
 $(foreach c,$(CROSS_CFGS),$(eval $(call link_rules,$(c))))
 
 cross: $(foreach c,$(CROSS_CFGS),$(B)/$(c)/link_check.elf)
-	@set -e; for k in $(CROSS_CORES); do \
-	  nm=$$(case $$k in rv*) echo $(MDR_RV_PREFIX)nm;; *) echo $(MDR_CM_PREFIX)nm;; esac); \
+	@set -e; $(foreach k,$(CROSS_CORES),k=$(k); nm=$(call xtool,$(k),nm); \
 	  und=$$($$nm -u $(B)/$$k/mdr_f32.o $(B)/$$k/mdr_q31.o $(B)/$$k/mdr_status.o | awk 'NF==2{print $$2}' | sort -u); \
 	  bad=$$(printf '%s\n' $$und | grep -Ev '$(ALLOW_RE)' | grep -v '^$$' || true); \
 	  if [ -n "$$bad" ]; then echo "cross $$k: undefined symbols outside the allow-list: $$bad"; exit 1; fi; \
 	  qf=$$($$nm -u $(B)/$$k/mdr_q31.o | awk 'NF==2{print $$2}' | grep -E '$(FLOAT_RE)' || true); \
 	  if [ -n "$$qf" ]; then echo "cross $$k: float helpers in the q31 step: $$qf"; exit 1; fi; \
-	  echo "cross $$k: lib/ ok (undefined: $$(printf '%s ' $$und); q31 step: $$($$nm -u $(B)/$$k/mdr_q31.o | awk 'NF==2{printf "%s ", $$2}'))"; \
-	done; \
-	for c in $(CROSS_CFGS); do \
-	  nm=$$(case $$c in rv*) echo $(MDR_RV_PREFIX)nm;; *) echo $(MDR_CM_PREFIX)nm;; esac); \
+	  echo "cross $$k: lib/ ok (undefined: $$(printf '%s ' $$und); q31 step: $$($$nm -u $(B)/$$k/mdr_q31.o | awk 'NF==2{printf "%s ", $$2}'))";) \
+	$(foreach c,$(CROSS_CFGS),c=$(c); nm=$(call xtool,$(c),nm); \
 	  dbl=$$($$nm $(B)/$$c/link_check.elf | awk '{print $$NF}' | grep -E '$(DOUBLE_RE)' || true); \
 	  if [ -n "$$dbl" ]; then echo "cross $$c: double-precision helpers: $$dbl"; exit 1; fi; \
-	  echo "cross $$c: linked with -nostdlib -lgcc, no double helper"; \
-	done
+	  echo "cross $$c: linked with -nostdlib -lgcc, no double helper";)
 
 # Flash (text + data) of each core-arithmetic program after --gc-sections,
 # lib/'s own static RAM (data + bss of its objects), the instance sizes on
@@ -240,17 +236,13 @@ cross: $(foreach c,$(CROSS_CFGS),$(B)/$(c)/link_check.elf)
 # graph (port/stack_depth.awk; libgcc helpers listed, not counted).
 size: cross
 	@printf '%-16s %7s %7s   %s\n' config flash "lib RAM" "program (port/link_check.c, --gc-sections)"
-	@for c in $(CROSS_CFGS); do \
-	  k=$${c%%-*}; a=$${c#*-}; sz=$$(case $$k in rv*) echo $(MDR_RV_PREFIX)size;; *) echo $(MDR_CM_PREFIX)size;; esac); \
+	@$(foreach c,$(CROSS_CFGS),c=$(c); k=$${c%%-*}; a=$${c#*-}; sz=$(call xtool,$(c),size); \
 	  ram=$$($$sz $(B)/$$k/libmdr.a | awk 'NR>1{s+=$$2+$$3} END{print s}'); \
-	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c -v r=$$ram -v a=$$a 'NR>1{printf "%-16s %7d %7d   %s\n",c,$$1+$$2,r,(a=="f32"?"all profiles, closed forms, critical states, stress, tables, engine":a=="f32nostress"?"the same without the stress functions":"all profiles: table from a profile, q31 conversion, float init, q31 steps")}'; \
-	done
+	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c -v r=$$ram -v a=$$a 'NR>1{printf "%-16s %7d %7d   %s\n",c,$$1+$$2,r,(a=="f32"?"all profiles, closed forms, critical states, stress, tables, engine":a=="f32nostress"?"the same without the stress functions":"all profiles: table from a profile, q31 conversion, float init, q31 steps")}';)
 	@echo; printf '%-10s %s\n' core "instance sizes in bytes (sizeof on the core)"
-	@for k in $(CROSS_CORES); do \
-	  nm=$$(case $$k in rv*) echo $(MDR_RV_PREFIX)nm;; *) echo $(MDR_CM_PREFIX)nm;; esac); \
+	@$(foreach k,$(CROSS_CORES),k=$(k); nm=$(call xtool,$(k),nm); \
 	  $$nm -S $(B)/$$k/sizes.o | awk -v k=$$k 'function hex(h, i, v) { v = 0; for (i = 1; i <= length(h); i++) v = 16 * v + index("0123456789abcdef", substr(h, i, 1)) - 1; return v } \
-	    {n=$$4; sub(/^mdr_sizeof_/,"",n); s=s sprintf(" %s %d", n, hex($$2))} END{printf "%-10s%s\n", k, s}'; \
-	done
+	    {n=$$4; sub(/^mdr_sizeof_/,"",n); s=s sprintf(" %s %d", n, hex($$2))} END{printf "%-10s%s\n", k, s}';)
 	@echo; echo "worst stack depth of a step function (d, F or z), bytes: call graph of -fstack-usage, libgcc helpers not counted"
 	@for k in $(CROSS_CORES); do for a in f32 q31; do \
 	  awk -v roots="^mdr_engine_step_[dFz]_$$a\$$" -f port/stack_depth.awk $(B)/$$k/*.ci | sort -k2 -n | tail -1 | \
@@ -314,9 +306,7 @@ TGT_RUNS := $(foreach t,m4 m3,$(addprefix $(B)/tgt-$(t)/,$(addsuffix .run,$(TGT_
 target-test:
 	@rm -f $(TGT_RUNS)
 	@$(MAKE) --no-print-directory -j2 $(TGT_RUNS) || { echo "target-test: failed"; exit 1; }
-	@for t in m4 m3; do m=$$(case $$t in m4) echo $(QEMU_m4);; m3) echo $(QEMU_m3);; esac); \
-	  for x in $$(case $$t in m4) echo "$(TGT_TESTS_m4)";; m3) echo "$(TGT_TESTS_m3)";; esac); do \
-	    echo "== target $$m: $$x"; cat $(B)/tgt-$$t/$$x.log; done; done
+	@$(foreach t,m4 m3,$(foreach x,$(TGT_TESTS_$(t)),echo "== target $(QEMU_$(t)): $(x)"; cat $(B)/tgt-$(t)/$(x).log;))
 	@a=$$($(MDR_CM_PREFIX)nm $(B)/tgt-m3/q31_trace.elf | awk '$$3=="mdr_engine_step_d_q31"{print $$1}'); \
 	  case $$a in 2*) echo "target mps2-an385: the q31 step ran from RAM (MDR_STEP_SECTION, at 0x$$a)";; \
 	  *) echo "target mps2-an385: MDR_STEP_SECTION did not place the step in RAM (0x$$a)"; exit 1;; esac
