@@ -129,13 +129,13 @@ q31-exact:
 	done; echo "q31-exact: $(words $(EXACT_BUILDS)) builds, identical outputs"
 
 # engine step cost against N and against the naive O(N) force sum (one run)
-$(B)/host/bench_engine: host_tests/bench_engine.c $(B)/host/libmdr.a
+$(B)/host/bench_engine: host_tests/bench_engine.c host_tests/bench_scene.h $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 -Wall -Wextra -Werror -Ilib/include -O2 $< $(B)/host/libmdr.a -lm -o $@
 # instructions per step on the emulated Cortex-M4F and M3 (QEMU -icount
 # shift=0; the M3 build runs the step from RAM, as in target-test)
 BENCH_CORE_m4 := Cortex-M4F
 BENCH_CORE_m3 := Cortex-M3
-$(B)/tgt-%/bench_target.elf: host_tests/target/bench_target.c $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
+$(B)/tgt-%/bench_target.elf: host_tests/target/bench_target.c host_tests/bench_scene.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
 	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(BENCH_CORE_$*)"' $(TGT_TEST_CFLAGS) $< \
 	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
 bench: $(B)/host/bench_engine $(B)/tgt-m4/bench_target.elf $(B)/tgt-m3/bench_target.elf

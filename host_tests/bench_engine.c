@@ -27,9 +27,9 @@
 #include <time.h>
 
 #include "mdr.h"
+#include "bench_scene.h"
 #include "naive_sum.h"
 
-#define STEPS 20000
 #define REPEAT 7
 
 static mdr_node_f32 n32[4097];
@@ -45,13 +45,6 @@ static double now_ns(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
-}
-
-static double path(long i)
-{
-    /* 0 -> 0.1 um in STEPS/4 ticks, then down to -0.3 um */
-    long q = STEPS / 4;
-    return i <= q ? 0.1e-6 * (double)i / (double)q : 0.1e-6 - 0.4e-6 * (double)(i - q) / (double)(STEPS - q);
 }
 
 #define BENCH(T, SFX, NODES, NAIVE)                                                               \
@@ -155,7 +148,7 @@ int main(void)
     long i;
     int a;
     for (i = 1; i <= STEPS; i++) {
-        in_f64[i] = path(i);
+        in_f64[i] = bench_path(i);
         in_f32[i] = (float)in_f64[i];
     }
     printf("engine step cost vs springs N (sphere, fixed grips, %d-tick approach-retract cycle, "

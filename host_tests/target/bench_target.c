@@ -14,7 +14,7 @@
  * reproducible (instructions, not time; a real M4F spends more cycles per
  * instruction on loads, divides and branches).
  *
- * Scene and path as host_tests/bench_engine.c: exact sphere R = 1 um,
+ * Scene and path (host_tests/bench_scene.h, as the host bench): exact sphere R = 1 um,
  * E* = 1 MPa, w = 0.05, w_adv = 0.02, table to 0.7 R, fixed grips, d from 0
  * to 0.1 um and back to -0.3 um (past pull-off). f32 engine and q31 engine
  * (table from the f32 one, float init, raw Q2.29 inputs converted before
@@ -28,12 +28,12 @@
 #include <stdio.h>
 
 #include "mdr.h"
+#include "../bench_scene.h"
 #include "mdr_port.h"
 
 #ifndef BENCH_CORE
 #define BENCH_CORE "Cortex-M4F"
 #endif
-#define STEPS 20000
 #define PAINT 4096 /* bytes of stack painted below the caller's frame */
 
 static mdr_node_f32 n32[4097];
@@ -73,12 +73,6 @@ static uint32_t painted_used(uint32_t *top)
         p++;
     }
     return (uint32_t)((uintptr_t)top - (uintptr_t)p);
-}
-
-static double path(long i)
-{
-    long q = STEPS / 4;
-    return i <= q ? 0.1e-6 * (double)i / (double)q : 0.1e-6 - 0.4e-6 * (double)(i - q) / (double)(STEPS - q);
 }
 
 /* one cycle of an engine (inputs in_##SFX); returns ticks, *stack the
@@ -121,7 +115,7 @@ int main(void)
     mdr_port_cycles_init();
     ipt = calibrate();
     for (i = 1; i <= STEPS; i++) {
-        in_f32[i] = (float)path(i);
+        in_f32[i] = (float)bench_path(i);
     }
     if (mdr_contact_init_f32(&c, MDR_PROFILE_SPHERE, p, 1e6f, 0.05f) != MDR_OK) {
         return 1;
