@@ -62,7 +62,7 @@ $(B)/host/gen_tip.c: $(B)/host/mdr
 	./$(B)/host/mdr table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --name gen_tip > $@
 $(B)/host/test_engine_ref: host_tests/test_engine_ref.c $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) $(B)/host/libmdr.a -lcmocka $(GSL_LIBS) -o $@
-$(B)/host/test_q31: host_tests/test_q31.c $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
+$(B)/host/test_q31: host_tests/test_q31.c host_tests/scenes.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) $(B)/host/libmdr.a -lcmocka $(GSL_LIBS) -o $@
 $(B)/host/test_engine: host_tests/test_engine.c $(B)/host/gen_tip.c $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/gen_tip.c $(B)/host/libmdr.a -lcmocka -lm -o $@
@@ -92,7 +92,7 @@ host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
 	@for t in $(TESTS); do echo "== $$t"; ./$(B)/host/$$t || exit 1; done
 	@echo "== cli"; bash host_tests/test_cli.sh $(B)/host/mdr
 
-$(B)/san/test_q31: host_tests/test_q31.c $(REF_SRC) ref/mdr_ref.h $(B)/san/libmdr.a
+$(B)/san/test_q31: host_tests/test_q31.c host_tests/scenes.h $(REF_SRC) ref/mdr_ref.h $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(REF_SRC) $(B)/san/libmdr.a -lcmocka $(GSL_LIBS) -o $@
 
 SAN_TESTS := test_unit test_vectors test_engine test_q31

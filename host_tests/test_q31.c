@@ -15,8 +15,8 @@
  *   e_curve_f64  the same for the f64 engine on the same table and inputs;
  *   e_po     |F_pull-off - F_ref| / |F_ref|, F_ref from ref_critical for the
  *            control (and machine stiffness) from the approach's radius.
- * Tolerances: e_curve and e_po below TOL_GOAL = 1e-4 (the goal of issue 4),
- * except the flattened tip: TOL_FLATTIP = 5e-3, the error of the 1024-spring
+ * Tolerances: e_curve and e_po below GOAL_SMOOTH = 1e-4 (scenes.h) (the goal of issue 4),
+ * except the flattened tip: GOAL_FLATTIP = 5e-3, the error of the 1024-spring
  * table itself (the f64 engine's is the same): at the rim x = b of the flat
  * g' grows like 1/sqrt(x - b), which quadratic springs of width h resolve
  * only to O(h^1.5), and the grips pull-off lies close to the rim.
@@ -47,9 +47,8 @@
 
 #include "mdr.h"
 #include "mdr_ref.h"
+#include "scenes.h"
 
-#define TOL_GOAL 1e-4
-#define TOL_FLATTIP 5e-3
 #define TOL_LSB 8.0
 #define TOL_LSB_F32 128.0
 #define NSPR 1024
@@ -58,44 +57,10 @@
 static mdr_node_f64 nf[NSPR + 1];
 static mdr_node_q31 nq[NSPR + 1];
 
-typedef struct {
-    const char *name;
-    ref_scene s;
-    double L;    /* table extent */
-    int gap;     /* 1: tabulated tip (samples of s's gap profile) */
-    double goal; /* tolerance of e_curve and e_po against ref */
-} scene;
-
-static const scene scenes[] = {
-    {"paraboloid", {MDR_PROFILE_PARABOLOID, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 0, TOL_GOAL},
-    {"cone", {MDR_PROFILE_CONE, {0.5, 0, 0}, 1e6, 0.01}, 1e-6, 0, TOL_GOAL},
-    {"power law n=3", {MDR_PROFILE_POWERLAW, {5e11, 3, 0}, 1e6, 0.01}, 1e-6, 0, TOL_GOAL},
-    {"flat punch", {MDR_PROFILE_FLATPUNCH, {1e-6, 0, 0}, 1e6, 0.01}, 1e-6, 0, TOL_GOAL},
-    {"exact sphere", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 0, TOL_GOAL},
-    {"flattened tip", {MDR_PROFILE_FLATTIP, {1e-6, 0.2e-6, 0}, 1e6, 0.01}, 0.9e-6, 0, TOL_FLATTIP},
-    {"wavy (4.54)", {MDR_PROFILE_WAVY, {100e-6, 0.15e-6, 5e-6}, 1e6, 0.7957747154594767}, 80e-6, 0, TOL_GOAL},
-    {"tabulated sphere", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 1, TOL_GOAL},
-};
-#define NSCENES (sizeof scenes / sizeof scenes[0])
-
-/* the f64 table of a scene (tabulated tip: 600 samples of its gap) */
+/* the f64 table of a scene, N = NSPR */
 static void build(const scene *sc, mdr_table_f64 *t)
 {
-    mdr_contact_f64 c;
-    assert_int_equal(mdr_contact_init_f64(&c, (uint8_t)sc->s.kind, sc->s.p, sc->s.E, sc->s.w), MDR_OK);
-#ifndef MDR_TARGET_TEST
-    if (sc->gap) {
-        static double r[600], f[600];
-        int i;
-        for (i = 0; i < 600; i++) {
-            r[i] = sc->L * i / 599.0;
-            f[i] = ref_f(&sc->s, r[i]);
-        }
-        assert_int_equal(mdr_table_init_gap_f64(t, nf, NSPR, r, f, 600), MDR_OK);
-        return;
-    }
-#endif
-    assert_int_equal(mdr_table_init_profile_f64(t, nf, NSPR, &c, sc->L), MDR_OK);
+    assert_int_equal(scene_table_f64(sc, t, nf, NSPR), MDR_OK);
 }
 
 #ifndef MDR_TARGET_TEST
@@ -110,40 +75,6 @@ typedef struct {
     int jumps;
 } result;
 
-/* g and G of the f64 table's interpolant at a (lib/include/mdr_engine_t.h:
- * the quadratic through g_k, g_k+1 with the spring integral q_k) */
-static void tab_gG(const mdr_table_f64 *t, double a, double *g, double *G)
-{
-    int k = (int)(a / t->h);
-    const mdr_node_f64 *n0;
-    double e, s, be, h = t->h;
-    k = k < 0 ? 0 : k >= t->n ? t->n - 1 : k;
-    n0 = &t->node[k];
-    e = a - h * k;
-    s = (n0[1].g - n0->g) / h;
-    be = 6 * n0->q / (h * h * h);
-    *g = n0->g + e * (s + be * (h - e));
-    *G = n0->G + e * (n0->g + e * (0.5 * s + be * (0.5 * h - e / 3)));
-}
-
-/* distance of a state from a curve g, G (see the top); t64 NULL: ref */
-static double residual(const scene *sc, const mdr_table_f64 *t64, double a, double d, double F,
-                       int wall)
-{
-    double E = sc->s.E, g, G, r;
-    if (t64 != NULL) {
-        tab_gG(t64, a, &g, &G);
-    } else {
-        g = wall ? 0 : ref_g(&sc->s, a);
-        G = ref_G(&sc->s, a);
-    }
-    r = fabs(F - 2 * E * (a * d - G));
-    if (!wall) {
-        r = fmax(r, 2 * E * a * fabs(d - (g - sqrt(2 * M_PI * a * sc->s.w / E))));
-    }
-    return r;
-}
-
 /* one q31 tick of control mode ctl */
 static mdr_status step_q31(mdr_engine_q31 *q, int ctl, int32_t u, mdr_step_q31 *o)
 {
@@ -156,7 +87,7 @@ static mdr_status step_q31(mdr_engine_q31 *q, int ctl, int32_t u, mdr_step_q31 *
 static double residual_q31(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q31 *tq,
                            double Lq, double Dq, double Fq, const mdr_step_q31 *o)
 {
-    return residual(sc, t64, o->a * Lq / 1073741824.0, o->d * Dq, o->F * Fq,
+    return scene_residual(sc, t64, o->a * Lq / 1073741824.0, o->d * Dq, o->F * Fq,
                     tq->wall && o->a == MDR_Q30_ONE);
 }
 
@@ -167,34 +98,14 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
     mdr_engine_q31 q, qf;
     mdr_step_f64 o, po64 = {0};
     mdr_step_q31 oq, oqf, po = {0};
-    mdr_contact_f64 c;
     result res = {0, 0, 0, 0, 0, 0, 0, 0};
-    double E = sc->s.E, w = sc->s.w, L = sc->L, cL = sqrt(2 * M_PI * w * L / E);
-    double g8, dmax, dmin, Ftop, Fmin = 0, km = 2 * E * L / 3, top, bot, a_top = 0, unit, Dq, Fq, Lq;
+    double E = sc->s.E, w = sc->s.w, km, a_top = 0, unit, Dq, Fq, Lq;
     const int nup = 1500, ndown = 3000;
     int i, checked = 0;
     ref_crit rc;
-    assert_int_equal(mdr_contact_init_f64(&c, (uint8_t)sc->s.kind, sc->s.p, E, w), MDR_OK);
-    assert_int_equal(mdr_profile_eval_f64(&c, 0.8 * L, &g8, NULL, NULL), MDR_OK);
-    dmax = 0.9 * (g8 - sqrt(2 * M_PI * w * 0.8 * L / E));
-    dmax = dmax > 0 ? dmax : 0.3 * cL;
-    dmin = -1.2 * cL;
-    /* the force range from a grips cycle in f64 */
-    assert_int_equal(mdr_engine_init_f64(&e, t64, E, w, w, 0), MDR_OK);
-    for (i = 1; i <= nup + ndown; i++) {
-        double d = i <= nup ? dmax * i / nup : dmax + (dmin - dmax) * (i - nup) / ndown;
-        assert_int_equal(mdr_engine_step_d_f64(&e, d, &o), MDR_OK);
-        Fmin = fmin(Fmin, o.F);
-        if (i == nup) {
-            Ftop = o.F;
-        }
-    }
-    assert_true(Ftop > 0);
-    top = ctl == MDR_CONTROL_GRIPS ? dmax : ctl == MDR_CONTROL_LOAD ? 0.8 * Ftop : dmax + 0.8 * Ftop / km;
-    bot = ctl == MDR_CONTROL_GRIPS ? dmin : ctl == MDR_CONTROL_LOAD ? 1.3 * Fmin : dmin + 1.3 * Fmin / km;
-    if (ctl != MDR_CONTROL_MACHINE) {
-        km = 0;
-    }
+    scene_path P;
+    assert_int_equal(scene_path_of(sc, t64, nup, ndown, &P), MDR_OK);
+    km = ctl == MDR_CONTROL_MACHINE ? P.km : 0;
     assert_int_equal(mdr_engine_init_f64(&e, t64, E, w, w, km), MDR_OK);
     assert_int_equal(mdr_engine_init_q31_f64(&q, tq, E, w, w, km), MDR_OK);
     assert_int_equal(mdr_engine_init_q31_f32(&qf, tq, (float)E, (float)w, (float)w, (float)km), MDR_OK);
@@ -203,8 +114,7 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
     Fq = 2 * E * Lq * q.D0 / 536870912.0;
     unit = ctl == MDR_CONTROL_GRIPS ? q.D0 : ctl == MDR_CONTROL_LOAD ? 2 * E * Lq * q.D0 : q.Z0;
     for (i = 1; i <= nup + ndown; i++) {
-        double u = i <= nup ? top * i / nup : top + (bot - top) * (i - nup) / ndown;
-        int32_t uq = q29(u, unit);
+        int32_t uq = q29(scene_u(&P, ctl, nup, ndown, i), unit);
         double uf = uq * unit / 536870912.0; /* the same input for f64 */
         int sample = i % ((nup + ndown) / NCHECK) == 0;
         double F;
@@ -236,7 +146,7 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
             checked++;
         }
         if (e.contact && (sample || o.jumps)) {
-            res.eF = fmax(res.eF, residual(sc, NULL, o.a, o.d, o.F, t64->wall && o.a == sc->L));
+            res.eF = fmax(res.eF, scene_residual(sc, NULL, o.a, o.d, o.F, t64->wall && o.a == sc->L));
         }
     }
     assert_int_equal(q.flags, 0);
