@@ -64,7 +64,7 @@ $(B)/host/test_engine_ref: host_tests/test_engine_ref.c $(REF_SRC) ref/mdr_ref.h
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) $(B)/host/libmdr.a -lcmocka $(GSL_LIBS) -o $@
 $(B)/host/test_q31: host_tests/test_q31.c host_tests/scenes.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) $(B)/host/libmdr.a -lcmocka $(GSL_LIBS) -o $@
-$(B)/host/test_engine: host_tests/test_engine.c $(B)/host/gen_tip.c $(B)/host/libmdr.a
+$(B)/host/test_engine: host_tests/test_engine.c host_tests/bench_matrix.h host_tests/scenes.h $(B)/host/gen_tip.c $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/gen_tip.c $(B)/host/libmdr.a -lcmocka -lm -o $@
 
 $(B)/host/test_unit: host_tests/test_unit.c $(B)/host/libmdr.a
@@ -85,7 +85,7 @@ $(B)/san/test_unit: host_tests/test_unit.c $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
 $(B)/san/test_vectors: host_tests/test_vectors.c $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_engine: host_tests/test_engine.c $(B)/host/gen_tip.c $(B)/san/libmdr.a
+$(B)/san/test_engine: host_tests/test_engine.c host_tests/bench_matrix.h host_tests/scenes.h $(B)/host/gen_tip.c $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/host/gen_tip.c $(B)/san/libmdr.a -lcmocka -lm -o $@
 
 host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr

@@ -4,7 +4,7 @@
  * seed and a tabulated tip, each with its table extent, and the control path
  * of one approach-retract cycle through pull-off under each control mode.
  * GSL-free: the target benchmark includes it too; the residual against the
- * reference (scene_residual) needs ref/ and is host-only.
+ * reference (scene_residual) needs ref/: it is there with SCENES_REF.
  */
 #ifndef SCENES_H
 #define SCENES_H
@@ -14,6 +14,9 @@
 
 #include "mdr.h"
 #include "mdr_ref.h"
+
+/* not every includer uses every helper */
+#define SCENE_FN static __attribute__((unused))
 
 typedef struct {
     const char *name; /* for people */
@@ -44,7 +47,7 @@ static const scene scenes[] = {
 
 /* the tabulated tip's samples: r_i = L i/(GAP_SAMPLES-1) and the gap of the
  * exact sphere, f = R - sqrt(R^2 - r^2) (as ref_f) */
-static void scene_gap(const scene *sc, double *r, double *f)
+SCENE_FN void scene_gap(const scene *sc, double *r, double *f)
 {
     int i;
     double R = sc->s.p[0];
@@ -55,7 +58,7 @@ static void scene_gap(const scene *sc, double *r, double *f)
 }
 
 /* The f64 table of a scene with n springs into nodes[n + 1]. */
-static mdr_status scene_table_f64(const scene *sc, mdr_table_f64 *t, mdr_node_f64 *nodes, uint16_t n)
+SCENE_FN mdr_status scene_table_f64(const scene *sc, mdr_table_f64 *t, mdr_node_f64 *nodes, uint16_t n)
 {
     mdr_contact_f64 c;
     mdr_status st = mdr_contact_init_f64(&c, (uint8_t)sc->s.kind, sc->s.p, sc->s.E, sc->s.w);
@@ -83,7 +86,7 @@ typedef struct {
     double top[4], bot[4], km;
 } scene_path;
 
-static mdr_status scene_path_of(const scene *sc, const mdr_table_f64 *t64, int nup, int ndown,
+SCENE_FN mdr_status scene_path_of(const scene *sc, const mdr_table_f64 *t64, int nup, int ndown,
                                 scene_path *P)
 {
     mdr_engine_f64 e;
@@ -126,7 +129,7 @@ static mdr_status scene_path_of(const scene *sc, const mdr_table_f64 *t64, int n
 }
 
 /* the controlled value at tick i = 1 ... nup + ndown */
-static double scene_u(const scene_path *P, int ctl, int nup, int ndown, long i)
+SCENE_FN double scene_u(const scene_path *P, int ctl, int nup, int ndown, long i)
 {
     double top = P->top[ctl], bot = P->bot[ctl];
     return i <= nup ? top * (double)i / nup : top + (bot - top) * (double)(i - nup) / ndown;
@@ -134,7 +137,7 @@ static double scene_u(const scene_path *P, int ctl, int nup, int ndown, long i)
 
 /* g and G of an f64 table's interpolant at a (lib/include/mdr_engine_t.h:
  * the quadratic through g_k, g_k+1 with the spring integral q_k) */
-static void scene_tab_gG(const mdr_table_f64 *t, double a, double *g, double *G)
+SCENE_FN void scene_tab_gG(const mdr_table_f64 *t, double a, double *g, double *G)
 {
     int k = (int)(a / t->h);
     const mdr_node_f64 *n0;
@@ -148,13 +151,13 @@ static void scene_tab_gG(const mdr_table_f64 *t, double a, double *g, double *G)
     *G = n0->G + e * (n0->g + e * (0.5 * s + be * (0.5 * h - e / 3)));
 }
 
-#ifndef MDR_TARGET_TEST
+#ifdef SCENES_REF
 /* Distance of a contact state (a, d, F) from the equilibrium curve of the
  * reference (t64 NULL) or of an f64 table's interpolant:
  * max(|F - 2E*(a d - G(a))|, 2E* a |d - (g(a) - sqrt(2 pi a w/E*))|); the
  * second term (the depth error as a force through the contact stiffness)
  * is omitted at a wall (the flat punch's rim), where the edge is pinned. */
-static double scene_residual(const scene *sc, const mdr_table_f64 *t64, double a, double d, double F,
+SCENE_FN double scene_residual(const scene *sc, const mdr_table_f64 *t64, double a, double d, double F,
                              int wall)
 {
     double E = sc->s.E, g, G, r;

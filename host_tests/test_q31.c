@@ -47,6 +47,9 @@
 
 #include "mdr.h"
 #include "mdr_ref.h"
+#ifndef MDR_TARGET_TEST
+#define SCENES_REF
+#endif
 #include "scenes.h"
 
 #define TOL_LSB 8.0

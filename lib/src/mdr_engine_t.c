@@ -349,13 +349,30 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_dU)(const MDR_SFX(mdr_e_branch) *b, const
     return b->al * (tg - b->c) + b->ka * p->x * (tg - MDR_K(3.0) * b->c);
 }
 
+/* Bound on the rounding error of mdr_e_U at p: 8 eps times the sum of the
+ * magnitudes of its terms (U = al D + ka (x D - G), D = g - c t). Near a
+ * fold U is flat, and values within this bound of each other are not
+ * ordered by the arithmetic. */
+static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol)(const MDR_SFX(mdr_e_branch) *b, const MDR_SFX(mdr_e_pt) *p)
+{
+    MDR_T Dm = MDR_SFX(mdr_m_fabs)(p->g) + MDR_SFX(mdr_m_fabs)(b->c * p->t);
+    return MDR_K(8.0) * MDR_EPS *
+           (MDR_SFX(mdr_m_fabs)(b->al) * Dm +
+            MDR_SFX(mdr_m_fabs)(b->ka) * (MDR_SFX(mdr_m_fabs)(p->x) * Dm + MDR_SFX(mdr_m_fabs)(p->G)));
+}
+
 /* Root of dir*(U - u) in spring k between ta (value < 0) and tb (>= 0):
- * Newton from the secant point, bisection whenever Newton leaves the
- * bracket; converges to the rounding level well inside MDR_ENG_ITER. */
+ * Newton from the secant point, safeguarded as rtsafe (Press et al.,
+ * Numerical Recipes, 2nd ed., 9.4): bisection whenever Newton leaves the
+ * bracket or does not at least halve the step before the last one. Near
+ * the root the rounding noise of U (the cancellation in x D - G) makes
+ * plain Newton wander inside the bracket with steps of a few ulps; the
+ * halving rule bounds the iterations by those of bisection over the
+ * spring (width >= 1/(2N) of t: at most ~log2(2N/eps) < MDR_ENG_ITER). */
 static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, uint16_t k,
                                 MDR_T ta, MDR_T fa, MDR_T tb, MDR_T fb, MDR_SFX(mdr_e_pt) *out)
 {
-    MDR_T lo = ta, hi = tb, t;
+    MDR_T lo = ta, hi = tb, t, dx = tb - ta, dxold = dx;
     int it;
     t = fb - fa > MDR_K(0.0) ? ta + (tb - ta) * (-fa / (fb - fa)) : MDR_K(0.5) * (ta + tb);
     for (it = 0; it < MDR_ENG_ITER; it++) {
@@ -374,12 +391,15 @@ static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int 
             *out = p;
             return true;
         }
-        if (!((tn - lo) * (tn - hi) < MDR_K(0.0))) {
+        if (!((tn - lo) * (tn - hi) < MDR_K(0.0)) ||
+            MDR_SFX(mdr_m_fabs)(MDR_K(2.0) * fv) > MDR_SFX(mdr_m_fabs)(dxold * df)) {
             tn = MDR_K(0.5) * (lo + hi);
         } else if (MDR_SFX(mdr_m_fabs)(tn - t) <= MDR_EPS * MDR_SFX(mdr_m_fabs)(t)) {
             *out = MDR_SFX(mdr_e_at)(b, k, tn);
             return true;
         }
+        dxold = dx;
+        dx = tn - t;
         t = tn;
     }
     *out = MDR_SFX(mdr_e_at)(b, k, hi);
@@ -595,7 +615,14 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T 
         if (o.jumps < 255u) {
             o.jumps++;
         }
-        r = MDR_SFX(mdr_e_scan)(&b, dir, uf, false, &pf, &pl);
+        /* the landing: the first point past the fold where the branch is
+         * back at uf. Past the fold U first moves away from uf; the
+         * target is uf shifted beyond the rounding error of U (mdr_e_Utol),
+         * so that a node next to the fold whose U equals uf but for
+         * rounding is not taken for a landing at the fold itself (which
+         * would fold again there, without end: seen in f32 at N = 4096
+         * in bench_matrix). */
+        r = MDR_SFX(mdr_e_scan)(&b, dir, uf + (MDR_T)dir * MDR_SFX(mdr_e_Utol)(&b, &pf), false, &pf, &pl);
         if (r == MDR_E_SCAN_NOCONV) {
             return MDR_SFX(mdr_e_refuse)(e, MDR_FLAG_NOCONV, MDR_E_NOCONV);
         }
