@@ -135,13 +135,32 @@ $(B)/host/bench_engine: host_tests/bench_engine.c host_tests/bench_scene.h $(B)/
 # shift=0; the M3 build runs the step from RAM, as in target-test)
 BENCH_CORE_m4 := Cortex-M4F
 BENCH_CORE_m3 := Cortex-M3
-$(B)/tgt-%/bench_target.elf: host_tests/target/bench_target.c host_tests/bench_scene.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
-	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(BENCH_CORE_$*)"' $(TGT_TEST_CFLAGS) $< \
+$(B)/tgt-%/bench_target.elf: host_tests/target/bench_target.c host_tests/bench_scene.h host_tests/bench_matrix.h host_tests/scenes.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
+	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(BENCH_CORE_$*)"' $(BENCH_TGT_$*) $(TGT_TEST_CFLAGS) $< \
 	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
-bench: $(B)/host/bench_engine $(B)/tgt-m4/bench_target.elf $(B)/tgt-m3/bench_target.elf
+# the M4F also counts the rows of the benchmark matrix
+BENCH_TGT_m4 := -DBENCH_MATRIX
+# The benchmark matrix (host_tests/bench_matrix.c): time and error on the
+# host, instructions from callgrind (one dump per row, divided by the row's
+# evaluations) and from the M4F run above; CSV, Markdown and the plot are
+# written to host_tests/bench/ (the README shows them).
+BENCH_OUT := host_tests/bench
+$(B)/host/bench_matrix: host_tests/bench_matrix.c host_tests/bench_matrix.h host_tests/scenes.h host_tests/naive_sum.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(REF_SRC) $(B)/host/libmdr.a $(GSL_LIBS) -o $@
+bench: $(B)/host/bench_engine $(B)/host/bench_matrix $(B)/tgt-m4/bench_target.elf $(B)/tgt-m3/bench_target.elf
+	@mkdir -p $(B)/bench $(BENCH_OUT)
 	./$(B)/host/bench_engine
-	port/cortex-m/run-qemu -M $(QEMU_m4) -icount -t 600 $(B)/tgt-m4/bench_target.elf
+	port/cortex-m/run-qemu -M $(QEMU_m4) -icount -t 1200 $(B)/tgt-m4/bench_target.elf > $(B)/bench/m4.log || { cat $(B)/bench/m4.log; exit 1; }
+	@grep -v '^M4,' $(B)/bench/m4.log; grep '^M4,' $(B)/bench/m4.log | sed 's/^M4,//' > $(B)/bench/m4.csv
 	port/cortex-m/run-qemu -M $(QEMU_m3) -icount -t 600 $(B)/tgt-m3/bench_target.elf
+	@rm -rf $(B)/bench/cg && mkdir -p $(B)/bench/cg
+	valgrind --tool=callgrind --callgrind-out-file=$(B)/bench/cg/cg.out ./$(B)/host/bench_matrix callgrind 2> $(B)/bench/callgrind.log || { cat $(B)/bench/callgrind.log; exit 1; }
+	@for f in $(B)/bench/cg/cg.out.*; do awk '/^desc: Trigger: Client Request: /{sub(/^desc: Trigger: Client Request: /, ""); n = split($$0, f, ","); key = f[1] "," f[2] "," f[3] "," f[4]; cnt = f[5]} \
+	  /^summary: /{printf "%s,%.1f\n", key, $$2 / cnt}' $$f; done > $(B)/bench/host_instr.csv
+	./$(B)/host/bench_matrix time --host-instr $(B)/bench/host_instr.csv --m4 $(B)/bench/m4.csv \
+	  --csv $(BENCH_OUT)/bench.csv --md $(BENCH_OUT)/bench.md --plot $(B)/bench/plot.dat
+	gnuplot -e "datafile='$(B)/bench/plot.dat'; outfile='$(BENCH_OUT)/bench.png'" host_tests/bench_plot.gp
+	@echo "bench: $(BENCH_OUT)/bench.csv, bench.md, bench.png written"
 
 demo: $(B)/host/afm_demo
 	./$(B)/host/afm_demo $(B)/demo

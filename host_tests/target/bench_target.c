@@ -30,6 +30,9 @@
 #include "mdr.h"
 #include "../bench_scene.h"
 #include "mdr_port.h"
+#ifdef BENCH_MATRIX
+#include "../bench_matrix.h"
+#endif
 
 #ifndef BENCH_CORE
 #define BENCH_CORE "Cortex-M4F"
@@ -104,6 +107,64 @@ static volatile int32_t sink_q31;
 CYCLE(f32, float, +=)
 CYCLE(q31, int32_t, ^=)
 
+#ifdef BENCH_MATRIX
+/* The benchmark matrix's rows that run on the target (bench_matrix.h:
+ * engine rows in f32, f64 (soft double) and q31, closed-form rows in f32
+ * and f64): one line "M4,scene,method,arith,N,instructions per evaluation"
+ * each, joined to the host's rows by bench_matrix.c. */
+static int matrix(double ipt)
+{
+    static bm_scene b;
+    size_t k;
+    int j, ctl, a;
+    for (k = 0; k < NSCENES; k++) {
+        if (bm_scene_init(&b, &scenes[k]) != MDR_OK) {
+            printf("bench: scene %s failed\n", scenes[k].key);
+            return 1;
+        }
+        for (a = 0; a < 2 && !scenes[k].gap; a++) {
+            double acc = 0;
+            uint32_t t0 = mdr_port_cycles();
+            mdr_status st = a ? bm_closed_f64(&b, &acc) : bm_closed_f32(&b, &acc);
+            uint32_t dt = ticks_since(t0);
+            sink_f32 = (float)acc;
+            if (st != MDR_OK) {
+                return 1;
+            }
+            printf("M4,%s,closed_form,%s,0,%.1f\n", scenes[k].key, a ? "f64" : "f32",
+                   (double)dt * ipt / (double)b.nradii);
+        }
+        for (j = 0; j < BM_NSIZES; j++) {
+            if (bm_tables(&b, bm_sizes[j]) != MDR_OK) {
+                return 1;
+            }
+            for (ctl = (int)MDR_CONTROL_LOAD; ctl <= (int)MDR_CONTROL_MACHINE; ctl++) {
+                if (bm_engines(&b, ctl) != MDR_OK) {
+                    return 1;
+                }
+                for (a = 0; a < BM_NARITH; a++) {
+                    double acc = 0;
+                    uint32_t t0 = mdr_port_cycles(), dt;
+                    mdr_status st = a == BM_F32   ? bm_cycle_f32(&b.e32, ctl, &acc)
+                                    : a == BM_F64 ? bm_cycle_f64(&b.e64, ctl, &acc)
+                                                  : bm_cycle_q31(&b.eq, ctl, &acc);
+                    dt = ticks_since(t0);
+                    sink_f32 = (float)acc;
+                    if (st == MDR_OK) {
+                        printf("M4,%s,%s,%s,%u,%.1f\n", scenes[k].key, bm_engine[ctl], bm_arith[a],
+                               (unsigned)bm_sizes[j], (double)dt * ipt / BM_STEPS);
+                    } else {
+                        printf("bench: %s %s %s N = %u: %s\n", scenes[k].key, bm_engine[ctl], bm_arith[a],
+                               (unsigned)bm_sizes[j], mdr_status_str(st));
+                    }
+                }
+            }
+        }
+    }
+    return 0;
+}
+#endif
+
 int main(void)
 {
     const float p[3] = {1e-6f, 0, 0};
@@ -160,5 +221,9 @@ int main(void)
     }
     printf("stack used by a step (measured, libgcc included): f32 %u bytes, q31 %u bytes\n",
            (unsigned)st32, (unsigned)st31);
+#ifdef BENCH_MATRIX
+    return matrix(ipt);
+#else
     return 0;
+#endif
 }
