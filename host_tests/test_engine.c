@@ -181,6 +181,81 @@ static void paraboloid_pull_off(void **st)
     }
 }
 
+/* A table so coarse that the pull-off lies inside spring 0 (8 springs over
+ * 50 um, h = 6.25 um; JKR grips pull-off at a = 1.25 um, load at 2.6 um,
+ * the equilibrium at d = 0 at a = (2 pi w R^2/E*)^(1/3) = 3.15 um). Spring 0
+ * of an adhesive branch holds the fold whatever its node values say; found
+ * by fuzz_step: the edge landed on a = 0 in contact at d = 0, and peeled
+ * "smoothly" with no pull-off below. The table is exact for the paraboloid,
+ * so the closed forms hold to TOL_X64 / TOL_X32, and the q31 engine to 4 LSB
+ * (of D0 for the depth residual of its state, of F0 for F: here 1 LSB of F0
+ * is 7e-5 of the pull-off force, the table spanning 37 000 times the
+ * cycle's force). */
+static void pull_off_inside_spring_0(void **st)
+{
+    const double Fl = -1.5 * PI_ * JW * JR, Fg = -5.0 / 6.0 * PI_ * JW * JR;
+    const double a_d0 = cbrt(2 * PI_ * JW * JR * JR / JE);
+    const double pd[3] = {JR, 0, 0};
+    const float pf[3] = {(float)JR, 0, 0};
+    static mdr_node_q31 nq[9];
+    mdr_table_f64 t64;
+    mdr_table_f32 t32;
+    mdr_table_q31 tq;
+    mdr_engine_f64 e;
+    mdr_engine_f32 f;
+    mdr_engine_q31 q;
+    mdr_step_f64 o, po;
+    mdr_step_f32 o32, po32;
+    mdr_step_q31 oq;
+    int i, found = 0;
+    (void)st;
+    table64(&t64, MDR_PROFILE_PARABOLOID, pd, 8, 50e-6);
+    table32(&t32, MDR_PROFILE_PARABOLOID, pf, 8, 50e-6f);
+    /* grips: deep, then d = 0 in one step, then down to pull-off */
+    assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, JW, 0), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_f64(&e, 5e-6, &o), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_f64(&e, 0.0, &o), MDR_OK);
+    assert_int_equal(e.contact, 1);
+    rel_le(o.a, a_d0, 0, TOL_X64, "a at d = 0 (f64)");
+    assert_true(run64(&e, MDR_CONTROL_GRIPS, 0, -1e-6, 1000, &po, NULL));
+    rel_le(po.F0, Fg, 0, TOL_X64, "grips pull-off in spring 0 (f64)");
+    assert_int_equal(mdr_engine_init_f32(&f, &t32, (float)JE, (float)JW, (float)JW, 0), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_f32(&f, 5e-6f, &o32), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_f32(&f, 0.0f, &o32), MDR_OK);
+    rel_le(o32.a, a_d0, 0, TOL_X32, "a at d = 0 (f32)");
+    assert_true(run32(&f, MDR_CONTROL_GRIPS, 0, -1e-6, 1000, &po32));
+    rel_le(po32.F0, Fg, 0, TOL_X32, "grips pull-off in spring 0 (f32)");
+    /* load */
+    assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, JW, 0), MDR_OK);
+    run64(&e, MDR_CONTROL_LOAD, 0, 5e-6, 10, &po, NULL);
+    assert_true(run64(&e, MDR_CONTROL_LOAD, 5e-6, -5e-6, 2000, &po, NULL));
+    rel_le(po.F0, Fl, 0, TOL_X64, "load pull-off in spring 0 (f64)");
+    assert_int_equal(mdr_engine_init_f32(&f, &t32, (float)JE, (float)JW, (float)JW, 0), MDR_OK);
+    run32(&f, MDR_CONTROL_LOAD, 0, 5e-6, 10, &po32);
+    assert_true(run32(&f, MDR_CONTROL_LOAD, 5e-6, -5e-6, 2000, &po32));
+    rel_le(po32.F0, Fl, 0, TOL_X32, "load pull-off in spring 0 (f32)");
+    /* q31, grips */
+    assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+    assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, JE, JW, JW, 0), MDR_OK);
+    for (i = 0; i <= 1000; i++) {
+        double d = i == 0 ? 5e-6 : -1e-6 * (i - 1) / 999.0;
+        assert_int_equal(mdr_engine_step_d_q31(&q, mdr_q31_in(&q, MDR_Q_D, (float)d), &oq), MDR_OK);
+        if (i == 1) {
+            /* the state's depth residual d(a) - 0 (a is set by d to
+             * ~20 LSB of L per LSB of D0 here: da/dd ~ 2) */
+            double a = mdr_q31_out(&q, MDR_Q_A, oq.a);
+            rel_le(a * a / JR - sqrt(2 * PI_ * a * JW / JE), 0.0, 4 * (double)q.D0 / 536870912.0, 1,
+                   "d(a) at d = 0 (q31, 4 LSB of D0)");
+        }
+        if (oq.event == MDR_EV_PULL_OFF) {
+            rel_le(mdr_q31_out(&q, MDR_Q_F, oq.F0), Fg, 4 * (double)q.F0 / 536870912.0, 1,
+                   "grips pull-off in spring 0 (q31, 4 LSB)");
+            found = 1;
+        }
+    }
+    assert_true(found);
+}
+
 /* Machine control: the pull-off equals the foundation's critical state for
  * the same stiffness (soft: near fixed load; stiff: near fixed grips). */
 static void paraboloid_machine(void **st)
@@ -735,6 +810,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(paraboloid_pull_off),
+        cmocka_unit_test(pull_off_inside_spring_0),
         cmocka_unit_test(paraboloid_machine),
         cmocka_unit_test(loading_branches),
         cmocka_unit_test(retraction_is_equilibrium),

@@ -548,6 +548,65 @@ static void stress_paraboloid_4_42(void **st)
     }
 }
 
+/* A flattened tip in contact on its flat only (a <= b) is a flat punch of
+ * radius a: sigma = -E* d/(pi sqrt(a^2 - r^2)) (4.27 with g = 0 on [0, a]).
+ * Found by make stress: every a < b returned MDR_E_OVERFLOW. */
+static void stress_flat_tip_on_the_flat(void **st)
+{
+    double R = 1e-6, b = 3e-7, E = 1e6, w = 0.05;
+    mdr_contact_f64 c = mk64(MDR_PROFILE_FLATTIP, R, b, 0, E, w);
+    mdr_contact_f32 cf = mk32(MDR_PROFILE_FLATTIP, R, b, 0, E, w);
+    (void)st;
+    for (double a = 1e-4 * b; a <= b; a *= 1.9) {
+        mdr_eqstate_f64 e;
+        assert_int_equal(mdr_eq_f64(&c, a, &e), MDR_OK);
+        for (double s = 0; s < 0.999; s += 0.0771) {
+            double want = -E * e.d / (M_PI * sqrt(a * a - s * a * s * a)), sig;
+            float sf;
+            assert_int_equal(mdr_stress_f64(&c, a, s * a, &sig), MDR_OK);
+            rel_le(sig, want, 0, 1e-13, "flat tip, a <= b");
+            assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)(s * a), &sf), MDR_OK);
+            rel_le(sf, want, 0, 2e-6, "flat tip, a <= b, f32");
+        }
+    }
+}
+
+/* The wavy profile's phase is reduced by whole wavelengths
+ * (mdr_m_struve01_wave): g at a contact radius of up to 1e12 wavelengths
+ * keeps f32 accuracy against f64 at the same float inputs (relative to the
+ * size of its two terms), and phases beyond 1e9 rad (found by fuzz_init:
+ * lambda = 2e-38 m made mdr_m_sincos convert 1.7e26 to long) are finite. */
+static void wavy_phase_of_many_wavelengths(void **st)
+{
+    (void)st;
+    for (double q = 30; q < 1e12; q *= 7.3) {
+        float lam = 1e-7f, x = (float)(q * 1e-7), R = 1000.0f * x, h = 1e-9f;
+        mdr_contact_f32 cf = mk32(MDR_PROFILE_WAVY, R, h, lam, 1e6, 0.05);
+        mdr_contact_f64 c = mk64(MDR_PROFILE_WAVY, R, h, lam, 1e6, 0.05);
+        double g, G;
+        float gf, Gf;
+        assert_int_equal(mdr_profile_eval_f64(&c, (double)x, &g, NULL, &G), MDR_OK);
+        assert_int_equal(mdr_profile_eval_f32(&cf, x, &gf, NULL, &Gf), MDR_OK);
+        /* the terms x^2/R and pi^2 x h/lambda H0 (|H0| <= 1) */
+        rel_le(gf, g, (double)x * (double)x / (double)R + 9.87 * (double)x * (double)h / (double)lam, 4e-7,
+               "wavy g, many wavelengths");
+    }
+    {
+        mdr_contact_f64 c = mk64(MDR_PROFILE_WAVY, 1e-10, 0, 2.35e-38, 1e-35, 1e-7);
+        mdr_contact_f64 ch = mk64(MDR_PROFILE_WAVY, 1e-10, 1e-40, 2.35e-38, 1e-35, 1e-7);
+        mdr_eqstate_f64 e;
+        mdr_contact_f32 cf = mk32(MDR_PROFILE_WAVY, 1e-10, 1e-40, 2.35e-38, 1e-35, 1e-7);
+        mdr_eqstate_f32 ef;
+        assert_int_equal(mdr_eq_f64(&c, 1e-12, &e), MDR_OK);
+        assert_int_equal(mdr_eq_f64(&ch, 1e-12, &e), MDR_OK); /* 4e25 wavelengths */
+        assert_true(isfinite(e.d) && isfinite(e.F));
+        /* past 2^46 wavelengths (f32; 2^104 in f64) no digit of the phase is
+         * left: refused */
+        assert_int_equal(mdr_eq_f32(&cf, 1e-12f, &ef), MDR_E_RADIUS);
+        assert_int_equal(mdr_eq_f64(&c, 1e-6, &e), MDR_E_RADIUS);
+    }
+}
+
 /* the machine mode interpolates between fixed load (k_m -> 0) and fixed
  * grips (k_m -> inf) */
 static void machine_limits(void **st)
@@ -733,6 +792,8 @@ int main(void)
         cmocka_unit_test(sphere_small_radius_no_cancellation),
         cmocka_unit_test(round_trips),
         cmocka_unit_test(stress_paraboloid_4_42),
+        cmocka_unit_test(stress_flat_tip_on_the_flat),
+        cmocka_unit_test(wavy_phase_of_many_wavelengths),
         cmocka_unit_test(machine_limits),
         cmocka_unit_test(init_errors),
         cmocka_unit_test(call_errors),

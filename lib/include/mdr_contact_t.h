@@ -71,7 +71,9 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind,
 
 /**
  * @brief Equivalent 1D profile at x: g(x), g'(x) and G(x) = int_0^x g.
- * @param[in]  x   0 < x, and x < R (sphere), x <= a0 (flat punch) [m]
+ * @param[in]  x   0 < x, and x < R (sphere), x <= a0 (flat punch),
+ *                 x/lambda < 2^46 (wavy, f32; 2^104 in f64: beyond, the
+ *                 phase 2 pi x/lambda has no correct digit) [m]
  * @param[out] g   g(x) [m] (may be NULL)
  * @param[out] dg  g'(x) [1] (may be NULL); +inf slopes (power law n < 1 at
  *                 small x, flattened tip at x = b) give MDR_E_OVERFLOW
@@ -161,7 +163,8 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
  *        3 x the radius a_x where g(a_x) = dl(a_x) (for power laws with
  *        n < 1/2: a_x/3), capped at a0 (flat punch) and 0.9 R (sphere) and at
  *        least 1.5 b (flattened tip); without adhesion the profile's length.
- * @param[out] a_start [m]
- * @return MDR_OK, MDR_E_NULL, MDR_E_NOCONV
+ * @param[out] a_start [m]; untouched unless MDR_OK
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NOCONV, MDR_E_OVERFLOW (the radius is
+ *         beyond the arithmetic's range: w/E* enormous)
  */
 mdr_status MDR_SFX(mdr_default_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_start);

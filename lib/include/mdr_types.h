@@ -32,7 +32,8 @@ typedef int8_t mdr_status;
 /** Unknown profile kind. */
 #define MDR_E_KIND (-4)
 /** Contact radius a outside the profile's domain (a <= 0, a >= R for the
- *  exact sphere, a > a0 for the flat punch). */
+ *  exact sphere, a > a0 for the flat punch, a/lambda >= 2^46 (f32) or 2^104
+ *  (f64) for the wavy profile). */
 #define MDR_E_RADIUS (-5)
 /** Radial position r outside [0, a). */
 #define MDR_E_POSITION (-6)

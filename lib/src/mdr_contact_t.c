@@ -52,10 +52,11 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         break;
     }
     case MDR_PROFILE_SPHERE: {
-        MDR_T t = x / k[0];
-        MDR_T am = MDR_SFX(mdr_m_atanh_m)(t), at = t + am;
+        /* 1 - t from R - x (exact for x >= R/2): accurate as a -> R */
+        MDR_T t = x / k[0], omt = (k[0] - x) / k[0];
+        MDR_T am = MDR_SFX(mdr_m_atanh_m2)(t, omt), at = t + am;
         *g = x * at;
-        *dg = at + t / ((MDR_K(1.0) - t) * (MDR_K(1.0) + t));
+        *dg = at + t / (omt * (MDR_K(1.0) + t));
         *hbar = MDR_K(0.5) * k[0] * (t * at + am / t);
         break;
     }
@@ -74,10 +75,10 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         break;
     }
     case MDR_PROFILE_WAVY: {
-        MDR_T h0, h1, h0p, zh, z, zl;
+        MDR_T h0, h1, h0p, zh, z;
         MDR_T t = x / c->p[0];
-        MDR_SFX(mdr_m_phase)(x, c->p[2], &z, &zl); /* z = 2 pi x/lambda, exact to eps^2 */
-        MDR_SFX(mdr_m_struve01)(z, zl, &h0, &h1, &h0p, &zh);
+        /* z = 2 pi x/lambda; phase exact to eps^2 for any x/lambda */
+        MDR_SFX(mdr_m_struve01_wave)(x, c->p[2], &z, &h0, &h1, &h0p, &zh);
         *g = x * t + k[0] * x * h0;                      /* 4.47 */
         *dg = MDR_K(2.0) * t + k[0] * (h0 + z * h0p);    /* d/dx [x H0(kx)] */
         *hbar = MDR_K(2.0) / MDR_K(3.0) * x * t + k[2] * zh; /* 4.51 / (2E* a) */
@@ -105,6 +106,9 @@ static mdr_status MDR_SFX(mdr_c_domain)(const MDR_SFX(mdr_contact) *c, MDR_T x)
     }
     if (c->kind == MDR_PROFILE_FLATPUNCH && x > c->p[0]) {
         return MDR_E_RADIUS;
+    }
+    if (c->kind == MDR_PROFILE_WAVY && !(x / c->p[2] < MDR_WAVY_QMAX)) {
+        return MDR_E_RADIUS; /* the phase 2 pi x/lambda has no correct digit */
     }
     return MDR_OK;
 }
@@ -376,6 +380,9 @@ static MDR_T MDR_SFX(mdr_c_abel)(const MDR_SFX(mdr_contact) *c, MDR_T r, MDR_T a
         return MDR_K(0.0);
     default:
         break;
+    }
+    if (c->kind == MDR_PROFILE_FLATTIP && a <= c->k[1]) {
+        return MDR_K(0.0); /* the contact lies on the flat: g' = 0 on [0, a] (found by make stress) */
     }
     if (c->kind == MDR_PROFILE_FLATTIP && r < c->k[1]) {
         return MDR_SFX(mdr_c_de)(c, r, MDR_K(0.0), MDR_SQRT((a - c->k[1]) * (a + c->k[1])), true);
@@ -663,13 +670,10 @@ static MDR_T MDR_SFX(mdr_c_length)(const MDR_SFX(mdr_contact) *c)
     }
 }
 
-mdr_status MDR_SFX(mdr_default_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_start)
+static mdr_status MDR_SFX(mdr_c_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_start)
 {
     MDR_T lo, hi, ax, g, dg, hb;
     int it;
-    if (c == NULL || a_start == NULL) {
-        return MDR_E_NULL;
-    }
     if (c->kind == MDR_PROFILE_FLATPUNCH) {
         *a_start = c->p[0];
         return MDR_OK;
@@ -740,5 +744,25 @@ mdr_status MDR_SFX(mdr_default_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_st
     if (c->kind == MDR_PROFILE_FLATTIP && *a_start < MDR_K(1.5) * c->k[1]) {
         *a_start = MDR_K(1.5) * c->k[1];
     }
+    return MDR_OK;
+}
+
+mdr_status MDR_SFX(mdr_default_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_start)
+{
+    MDR_T a = MDR_K(0.0);
+    mdr_status st;
+    if (c == NULL || a_start == NULL) {
+        return MDR_E_NULL;
+    }
+    st = MDR_SFX(mdr_c_start)(c, &a);
+    if (st != MDR_OK) {
+        return st;
+    }
+    /* 3 a_x beyond the arithmetic's range (w/E* huge: found by fuzz_init,
+     * a cone with E* = 1.4e-42 Pa in f32) */
+    if (!MDR_SFX(mdr_m_isfinite)(a) || !(a > MDR_K(0.0))) {
+        return MDR_E_OVERFLOW;
+    }
+    *a_start = a;
     return MDR_OK;
 }

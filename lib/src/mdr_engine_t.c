@@ -374,7 +374,12 @@ static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int 
 {
     MDR_T lo = ta, hi = tb, t, dx = tb - ta, dxold = dx;
     int it;
-    t = fb - fa > MDR_K(0.0) ? ta + (tb - ta) * (-fa / (fb - fa)) : MDR_K(0.5) * (ta + tb);
+    /* the secant point; the midpoint when ta is itself at the target
+     * (fa = 0: the landing of a jump-in at t = 0, where mdr_e_Utol is 0, or
+     * any fold whose U equals the target exactly): the secant would return
+     * ta, the fold, and the step would fold there again until
+     * MDR_E_NOCONV (found with an 8-spring table, test_engine) */
+    t = fa < MDR_K(0.0) && fb - fa > MDR_K(0.0) ? ta + (tb - ta) * (-fa / (fb - fa)) : MDR_K(0.5) * (ta + tb);
     for (it = 0; it < MDR_ENG_ITER; it++) {
         MDR_SFX(mdr_e_pt) p = MDR_SFX(mdr_e_at)(b, k, t);
         MDR_T fv = (MDR_T)dir * (MDR_SFX(mdr_e_U)(b, &p) - u);
@@ -450,17 +455,25 @@ static MDR_STEP_FN int MDR_SFX(mdr_e_scan)(const MDR_SFX(mdr_e_branch) *b, int d
         uint16_t seg = (uint16_t)(dir > 0 ? j - 1 : j); /* spring between tq and t_j */
         MDR_SFX(mdr_e_pt) pj = MDR_SFX(mdr_e_node)(b, (uint16_t)j);
         MDR_T Wj = (MDR_T)dir * MDR_SFX(mdr_e_U)(b, &pj);
+        /* Spring 0 of an adhesive branch (c > 0) holds a fold whatever its
+         * node values say: U(0) = 0, and just above t = 0 dl = c t beats g
+         * (and G), so U < 0 there and U has its minimum inside the spring.
+         * Its end node t = 0 is not a root to land on: a receding edge
+         * looks for the fold first (found by fuzz_step: a coarse table
+         * whose pull-off radius lies inside spring 0 landed on a = 0 in
+         * contact at d = 0, and peeled "smoothly" for d < 0). */
+        const bool fold0 = folds && dir < 0 && j == 0 && b->c > MDR_K(0.0);
         if (pj.t == tq) { /* the start is this node: nothing between */
             Wq = Wj;
             q_is_node = true;
             continue;
         }
-        if (folds ? Wj >= su : Wj > su) {
+        if (!fold0 && (folds ? Wj >= su : Wj > su)) {
             return MDR_SFX(mdr_e_root)(b, dir, u, seg, tq, Wq - su, pj.t, Wj - su, out)
                        ? MDR_E_SCAN_ROOT
                        : MDR_E_SCAN_NOCONV;
         }
-        if (folds && Wj < Wq) {
+        if (folds && (Wj < Wq || fold0)) {
             /* the maximum of W lies around tq: in this spring if W still
              * rises there, else in the spring before it (or tq itself) */
             MDR_SFX(mdr_e_pt) pq = MDR_SFX(mdr_e_at)(b, seg, tq);

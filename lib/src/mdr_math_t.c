@@ -27,6 +27,7 @@
 #define MDR_SPLIT MDR_K(4097.0)   /* 2^12 + 1, Veltkamp split */
 #define MDR_2PI_HI MDR_K(6.28318548202514648)      /* fl(2 pi) */
 #define MDR_2PI_LO MDR_K(-1.7484555314695172e-7)  /* 2 pi - fl(2 pi) */
+#define MDR_WAVY_QMAX MDR_K(7.0368744177664e13) /* 2^46: x/lambda limit, mdr_m_struve01_wave */
 #define MDR_GAMMA_M MDR_K(6.0)  /* Stirling remainder 1/(1188 x^9) < 1e-10 at x >= 6 */
 #else
 #define MDR_LOG_TERMS 12    /* |s|^25/25 < 2^-57 */
@@ -45,6 +46,7 @@
 #define MDR_SPLIT MDR_K(134217729.0) /* 2^27 + 1, Veltkamp split */
 #define MDR_2PI_HI MDR_K(6.283185307179586232)     /* fl(2 pi) */
 #define MDR_2PI_LO MDR_K(2.4492935982947064e-16)   /* 2 pi - fl(2 pi) */
+#define MDR_WAVY_QMAX MDR_K(2.028240960365167e31) /* 2^104: x/lambda limit, mdr_m_struve01_wave */
 #define MDR_GAMMA_M MDR_K(20.0) /* Stirling remainder < 2e-15 at x >= 20 */
 #endif
 
@@ -246,13 +248,18 @@ MDR_T MDR_SFX(mdr_m_powscaled)(MDR_T c, MDR_T x, MDR_T y)
     return MDR_SFX(mdr_m_ldexp)(mc * MDR_SFX(mdr_m_exp)(arg), k + ec);
 }
 
-/* atanh(t) - t for 0 <= t < 1, without cancellation.
+/* atanh(t) - t for 0 <= t < 1 given with omt = 1 - t, without
+ * cancellation: the caller forms omt from its own exact complement (the
+ * sphere: (R - x)/R, R - x exact for x >= R/2), so that near t -> 1 the
+ * result is not limited by the rounding of t (with omt = 1 - t from a
+ * rounded t the relative error of omt is eps/omt: 6 % at omt = 1e-6 in
+ * float, found by host_tests/stress.c).
  * t <= 0.6: series sum_{k>=1} t^(2k+1)/(2k+1) (term ratio <= 0.36, summed
  * until a term is below eps/4 of the sum; at most 60 terms); error <= 2 ulp.
  * t > 0.6: (1/2) log((1+t)/(1-t)) - t. At t = 0.6 atanh = 0.693 and the
  * difference 0.093, so the subtraction amplifies the log's error by at most
  * 7.5 (3 bits), less for larger t: error <= 16 ulp. */
-MDR_T MDR_SFX(mdr_m_atanh_m)(MDR_T t)
+MDR_T MDR_SFX(mdr_m_atanh_m2)(MDR_T t, MDR_T omt)
 {
     if (t <= MDR_K(0.6)) {
         MDR_T t2 = t * t, term = t * t2, sum = MDR_K(0.0);
@@ -267,7 +274,13 @@ MDR_T MDR_SFX(mdr_m_atanh_m)(MDR_T t)
         }
         return sum;
     }
-    return MDR_K(0.5) * MDR_SFX(mdr_m_log)((MDR_K(1.0) + t) / (MDR_K(1.0) - t)) - t;
+    return MDR_K(0.5) * MDR_SFX(mdr_m_log)((MDR_K(1.0) + t) / omt) - t;
+}
+
+/* atanh(t) - t for 0 <= t < 1 (omt = 1 - t). */
+MDR_T MDR_SFX(mdr_m_atanh_m)(MDR_T t)
+{
+    return MDR_SFX(mdr_m_atanh_m2)(t, MDR_K(1.0) - t);
 }
 
 /* atanh(t) for 0 <= t < 1: t + (atanh(t) - t). Error <= 3 ulp. */
@@ -312,15 +325,23 @@ MDR_T MDR_SFX(mdr_m_atan2p)(MDR_T y, MDR_T x)
     return swap ? MDR_PI * MDR_K(0.5) - sum : sum;
 }
 
-/* sin and cos of finite x. Reduction by pi/2 with a three-part Cody-Waite
- * constant (k*P1 and k*P2 exact for |k| < 2^12 in f32, 2^30 in f64, i.e.
- * |x| < 6400 resp. 1.6e9; beyond, the reduction error grows like |x| eps);
- * Taylor polynomials of sin (degree MDR_SIN_DEG) and cos (degree
- * MDR_SIN_DEG-1) on |r| <= pi/4: truncation < eps/4. Error <= 2 ulp in range. */
+/* sin and cos of x, |x| <= MDR_SINCOS_XMAX (asserted: the callers reduce
+ * larger phases themselves, mdr_m_struve01_wave). Reduction by pi/2 with a
+ * three-part Cody-Waite constant (k*P1 and k*P2 exact for |k| < 2^12 in
+ * f32, 2^30 in f64, i.e. |x| < 6400 resp. 1.6e9; beyond, the reduction
+ * error grows like |x| eps); Taylor polynomials of sin (degree MDR_SIN_DEG)
+ * and cos (degree MDR_SIN_DEG-1) on |r| <= pi/4: truncation < eps/4.
+ * Error <= 2 ulp for |x| < 6400. */
+#define MDR_SINCOS_XMAX MDR_K(1.0e9)
 void MDR_SFX(mdr_m_sincos)(MDR_T x, MDR_T *s, MDR_T *c)
 {
     MDR_T kf = x * MDR_K(0.636619772367581343075535053490057448);
-    long k = (long)(kf < MDR_K(0.0) ? kf - MDR_K(0.5) : kf + MDR_K(0.5));
+    long k;
+    MDR_ASSERT(x <= MDR_SINCOS_XMAX && x >= -MDR_SINCOS_XMAX);
+    if (!(kf <= MDR_K(1.0e9) && kf >= MDR_K(-1.0e9))) {
+        kf = MDR_K(0.0); /* outside the domain (assert compiled out): no UB */
+    }
+    k = (long)(kf < MDR_K(0.0) ? kf - MDR_K(0.5) : kf + MDR_K(0.5));
     MDR_T r = ((x - (MDR_T)k * MDR_PIO2_1) - (MDR_T)k * MDR_PIO2_2) - (MDR_T)k * MDR_PIO2_3;
     MDR_T r2 = r * r, ps = MDR_K(0.0), pc = MDR_K(0.0), sr, cr;
     int i;
@@ -364,18 +385,22 @@ static MDR_T MDR_SFX(mdr_m_two_prod_err)(MDR_T x, MDR_T y, MDR_T p)
     return ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
 }
 
-/* z = 2 pi x / lambda as an unevaluated sum zh + zl with |zl| <= ulp(zh)
- * and error ~ eps^2 z: compensated division (the residual x - q lambda is
- * exact by two-product and Sterbenz) and two-product with 2 pi = hi + lo.
- * A phase formed in plain arithmetic is off by ~3 eps z, which at z = 70
- * moves an oscillating term by 1e-5 of its amplitude in f32. */
-void MDR_SFX(mdr_m_phase)(MDR_T x, MDR_T lambda, MDR_T *zh, MDR_T *zl)
+/* 2 pi (qh + ql) as an unevaluated sum zh + zl, |zl| <= ulp(zh), error
+ * ~eps^2 (two-product with 2 pi = hi + lo). */
+static void MDR_SFX(mdr_m_two_pi)(MDR_T qh, MDR_T ql, MDR_T *zh, MDR_T *zl)
 {
-    MDR_T qh = x / lambda, p = qh * lambda;
-    MDR_T ql = ((x - p) - MDR_SFX(mdr_m_two_prod_err)(qh, lambda, p)) / lambda;
     MDR_T h = MDR_2PI_HI * qh;
     *zl = MDR_SFX(mdr_m_two_prod_err)(MDR_2PI_HI, qh, h) + (MDR_2PI_HI * ql + MDR_2PI_LO * qh);
     *zh = h;
+}
+
+/* x / lambda as qh + ql to ~eps^2: compensated division (the residual
+ * x - qh lambda is exact by two-product and Sterbenz). */
+static void MDR_SFX(mdr_m_turns)(MDR_T x, MDR_T lambda, MDR_T *qh, MDR_T *ql)
+{
+    MDR_T q = x / lambda, p = q * lambda;
+    *ql = ((x - p) - MDR_SFX(mdr_m_two_prod_err)(q, lambda, p)) / lambda;
+    *qh = q;
 }
 
 /* log(1+u) - u for |u| <= 1/40: alternating series -u^2/2 + u^3/3 - ...
@@ -493,6 +518,38 @@ static MDR_T MDR_SFX(mdr_m_struve_k)(int nu, MDR_T z)
     return sum;
 }
 
+/* The large-z branch of mdr_m_struve01 (z > MDR_STRUVE_ZMAX) given sv, cv =
+ * sin z, cos z (reduced by the caller: the phase of a wave is reduced by
+ * whole wavelengths, where it is exact). */
+static void MDR_SFX(mdr_m_struve01_asym)(MDR_T z, MDR_T sv, MDR_T cv, MDR_T *h0, MDR_T *h1, MDR_T *h0p,
+                                         MDR_T *zh0_h1)
+{
+    MDR_T p0, q0, p1, q1, amp, y0, y1, k1m;
+    MDR_SFX(mdr_m_hankel_pq)(MDR_K(0.0), z, &p0, &q0);
+    MDR_SFX(mdr_m_hankel_pq)(MDR_K(4.0), z, &p1, &q1);
+    /* chi0 = z - pi/4, chi1 = z - 3pi/4: with (s, c) = sincos(z),
+     * sin chi0 = (s - c)/sqrt2, cos chi0 = (c + s)/sqrt2,
+     * sin chi1 = -(s + c)/sqrt2, cos chi1 = (s - c)/sqrt2. */
+    amp = MDR_SQRT(MDR_K(1.0) / (MDR_PI * z)); /* sqrt(2/(pi z)) / sqrt2 */
+    y0 = amp * (p0 * (sv - cv) + q0 * (cv + sv));
+    y1 = amp * (-p1 * (sv + cv) + q1 * (sv - cv));
+    k1m = MDR_SFX(mdr_m_struve_k)(1, z); /* K1 - 2/pi */
+    *h0 = y0 + MDR_SFX(mdr_m_struve_k)(0, z);
+    *h1 = y1 + (MDR_K(2.0) / MDR_PI + k1m);
+    *h0p = -y1 - k1m;
+    *zh0_h1 = z * *h0 - *h1;
+}
+
+/* sin and cos of zh + zl (|zh| <= MDR_SINCOS_XMAX, zl <= ulp(zh)) to first
+ * order in zl. */
+static void MDR_SFX(mdr_m_sincos2)(MDR_T zh, MDR_T zl, MDR_T *s, MDR_T *c)
+{
+    MDR_T sv, cv;
+    MDR_SFX(mdr_m_sincos)(zh, &sv, &cv);
+    *s = sv + zl * cv;
+    *c = cv - zl * sv;
+}
+
 void MDR_SFX(mdr_m_struve01)(MDR_T z, MDR_T zl, MDR_T *h0, MDR_T *h1, MDR_T *h0p, MDR_T *zh0_h1)
 {
     if (z <= MDR_STRUVE_ZMAX) {
@@ -532,25 +589,47 @@ void MDR_SFX(mdr_m_struve01)(MDR_T z, MDR_T zl, MDR_T *h0, MDR_T *h1, MDR_T *h0p
         *h0p = s[3];
         *zh0_h1 = z * s[2];
     } else {
-        MDR_T p0, q0, p1, q1, sv, cv, amp, y0, y1;
-        MDR_SFX(mdr_m_hankel_pq)(MDR_K(0.0), z, &p0, &q0);
-        MDR_SFX(mdr_m_hankel_pq)(MDR_K(4.0), z, &p1, &q1);
-        /* chi0 = z - pi/4, chi1 = z - 3pi/4: with (s, c) = sincos(z),
-         * sin chi0 = (s - c)/sqrt2, cos chi0 = (c + s)/sqrt2,
-         * sin chi1 = -(s + c)/sqrt2, cos chi1 = (s - c)/sqrt2. */
-        MDR_SFX(mdr_m_sincos)(z, &sv, &cv);
-        {
-            MDR_T s0v = sv; /* sin(z + zl), cos(z + zl) to first order in zl */
-            sv += zl * cv;
-            cv -= zl * s0v;
-        }
-        amp = MDR_SQRT(MDR_K(1.0) / (MDR_PI * z)); /* sqrt(2/(pi z)) / sqrt2 */
-        y0 = amp * (p0 * (sv - cv) + q0 * (cv + sv));
-        y1 = amp * (-p1 * (sv + cv) + q1 * (sv - cv));
-        MDR_T k1m = MDR_SFX(mdr_m_struve_k)(1, z); /* K1 - 2/pi */
-        *h0 = y0 + MDR_SFX(mdr_m_struve_k)(0, z);
-        *h1 = y1 + (MDR_K(2.0) / MDR_PI + k1m);
-        *h0p = -y1 - k1m;
-        *zh0_h1 = z * *h0 - *h1;
+        MDR_T sv, cv;
+        MDR_SFX(mdr_m_sincos2)(z, zl, &sv, &cv);
+        MDR_SFX(mdr_m_struve01_asym)(z, sv, cv, h0, h1, h0p, zh0_h1);
     }
+}
+
+/* mdr_m_struve01 at z = 2 pi x/lambda (returned in *z) for the wavy profile:
+ * the phase as zh + zl to ~eps^2 z (a phase formed in plain arithmetic is
+ * off by ~3 eps z, which at z = 70 moves an oscillating term by 1e-5 of its
+ * amplitude in f32), and for the large-z branch sin z, cos z from
+ * the phase reduced by whole wavelengths, 2 pi ((qh - n) + ql) with n the
+ * integer nearest qh (qh - n exact), so that sin and cos keep their ulp
+ * accuracy for any number of wavelengths (a plain reduction of z loses
+ * |z| eps, and leaves the domain of mdr_m_sincos past 1e9). */
+void MDR_SFX(mdr_m_struve01_wave)(MDR_T x, MDR_T lambda, MDR_T *z, MDR_T *h0, MDR_T *h1, MDR_T *h0p,
+                                  MDR_T *zh0_h1)
+{
+    const MDR_T big = MDR_K(0.5) / MDR_EPS; /* 2^23 (f32), 2^52 (f64): ulp 1 */
+    MDR_T qh, ql, zh, zl, n, rh, rl, sv, cv;
+    MDR_SFX(mdr_m_turns)(x, lambda, &qh, &ql);
+    MDR_SFX(mdr_m_two_pi)(qh, ql, &zh, &zl);
+    *z = zh;
+    if (zh <= MDR_STRUVE_ZMAX) {
+        MDR_SFX(mdr_m_struve01)(zh, zl, h0, h1, h0p, zh0_h1);
+        return;
+    }
+    /* Whole turns off twice, each step exact: n nearest qh (beyond big
+     * every float is an integer), f = qh - n; where qh's ulp is >= 1 the
+     * turns lie in ql too, so fh + fl = f + ql (Fast2Sum: f is a multiple
+     * of ulp(qh) >= 2|ql|, or 0) loses its nearest integer m again. The
+     * callers keep qh < big^2 (mdr_c_domain: x/lambda < MDR_WAVY_QMAX), so
+     * |ql| < big and fh - m is exact; the phase keeps an error of
+     * ~eps max(1, ulp(qh)) turns. */
+    n = qh < big ? (qh + big) - big : qh;
+    {
+        MDR_T f = qh - n, fh = f + ql, fl = (f - fh) + ql, m, r;
+        m = (fh < MDR_K(0.0) ? (fh - big) + big : (fh + big) - big);
+        r = fh - m;
+        fh = r + fl;
+        MDR_SFX(mdr_m_two_pi)(fh, (r - fh) + fl, &rh, &rl);
+    }
+    MDR_SFX(mdr_m_sincos2)(rh, rl, &sv, &cv);
+    MDR_SFX(mdr_m_struve01_asym)(zh, sv, cv, h0, h1, h0p, zh0_h1);
 }

@@ -175,7 +175,8 @@ static MDR_STEP_FN bool mdr_q_root(const mdr_qb *b, int dir, int64_t u, uint16_t
 {
     int32_t lo = ta, hi = tb, t;
     int it;
-    t = fb > fa ? ta + (int32_t)(((int64_t)(tb - ta) * -fa) / (fb - fa)) : lo + (hi - lo) / 2;
+    /* secant point, or the midpoint when ta is at the target (mdr_e_root) */
+    t = fa < 0 && fb > fa ? ta + (int32_t)(((int64_t)(tb - ta) * -fa) / (fb - fa)) : lo + (hi - lo) / 2;
     for (it = 0; it < MDR_Q_ITER; it++) {
         mdr_qp p = mdr_q_at(b, k, t);
         int64_t fv = dir * (mdr_q_U(b, &p) - u);
@@ -246,16 +247,18 @@ static MDR_STEP_FN int mdr_q_scan(const mdr_qb *b, int dir, int64_t u, bool fold
         uint16_t seg = (uint16_t)(dir > 0 ? j - 1 : j);
         mdr_qp pj = mdr_q_node(b, (uint16_t)j);
         int64_t Wj = dir * mdr_q_U(b, &pj);
+        /* spring 0 of an adhesive branch holds a fold (mdr_e_scan) */
+        const bool fold0 = folds && dir < 0 && j == 0 && b->c > 0;
         if (pj.t == tq) {
             Wq = Wj;
             q_is_node = true;
             continue;
         }
-        if (folds ? Wj >= su : Wj > su) {
+        if (!fold0 && (folds ? Wj >= su : Wj > su)) {
             return mdr_q_root(b, dir, u, seg, tq, Wq - su, pj.t, Wj - su, out) ? MDR_Q_SCAN_ROOT
                                                                                : MDR_Q_SCAN_NOCONV;
         }
-        if (folds && Wj < Wq) {
+        if (folds && (Wj < Wq || fold0)) {
             mdr_qp pq = mdr_q_at(b, seg, tq), pf;
             int64_t Wf, fa = Wq - su;
             uint16_t fseg = seg;

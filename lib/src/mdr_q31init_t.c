@@ -114,6 +114,22 @@ mdr_status MDR_SFX(mdr_table_q31_from)(mdr_table_q31 *tab, mdr_node_q31 *node,
     return MDR_OK;
 }
 
+/* Every entry of the table zero (g, G, slopes, curvature): O(n), init only. */
+static bool MDR_SFX(mdr_q_table_zero)(const mdr_table_q31 *tab)
+{
+    uint16_t i;
+    if (tab->gmax != 0) {
+        return false;
+    }
+    for (i = 0; i <= tab->n; i++) {
+        const mdr_node_q31 *q = &tab->node[i];
+        if (q->g != 0 || q->G != 0 || q->s != 0 || q->b != 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
 mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *tab, MDR_T E,
                                         MDR_T w, MDR_T w_adv, MDR_T k_m)
 {
@@ -121,6 +137,7 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     mdr_engine_q31 z;
     MDR_T L, cw, ca, M, D0, kap, sc;
     uint8_t k = 0;
+    bool zero;
     mdr_status st;
     if (e == NULL || tab == NULL || tab->node == NULL) {
         return MDR_E_NULL;
@@ -140,15 +157,26 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     cw = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w / E) * L);
     ca = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w_adv / E) * L);
     M = (MDR_T)tab->gmax * ((MDR_T)tab->Dg / Q30) + cw;
-    /* D0 = 2^k Dg, the least k >= 0 with D0 >= M (Dg is a power of two) */
-    if (M > (MDR_T)tab->Dg) {
+    /* D0 = 2^k Dg, the least k >= 0 with D0 >= M (Dg is a power of two).
+     * An all-zero table (the flat punch: g, G, slopes and curvature 0) has
+     * no depth scale of its own (its Dg is L/1024): there D0 is the least
+     * power of two >= dl_w(L), whatever Dg, and the shift from the table's
+     * unit (sh) acts on zeros only. With D0 >= Dg instead, a cycle whose
+     * dl_w(L) is far below L/1024 used a sliver of Q2.29 (make stress:
+     * 3.6e-4 of max|F| for a 1 m punch with w/E* = 1e-18 m). */
+    zero = M > MDR_K(0.0) && MDR_SFX(mdr_q_table_zero)(tab);
+    if (zero) {
+        D0 = MDR_SFX(mdr_m_ldexp)(MDR_K(1.0), MDR_SFX(mdr_q_log2_ceil)(M));
+    } else if (M > (MDR_T)tab->Dg) {
         int kk = MDR_SFX(mdr_q_log2_ceil)(M) - MDR_SFX(mdr_q_log2_ceil)((MDR_T)tab->Dg);
         if (kk > 60) {
             return MDR_E_OVERFLOW;
         }
         k = (uint8_t)kk;
     }
-    D0 = MDR_SFX(mdr_m_ldexp)((MDR_T)tab->Dg, k);
+    if (!zero) {
+        D0 = MDR_SFX(mdr_m_ldexp)((MDR_T)tab->Dg, k);
+    }
     z.tab = tab;
     z.L = tab->L;
     z.D0 = (float)D0;
