@@ -368,7 +368,14 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol)(const MDR_SFX(mdr_e_branch) *b, con
  * the root the rounding noise of U (the cancellation in x D - G) makes
  * plain Newton wander inside the bracket with steps of a few ulps; the
  * halving rule bounds the iterations by those of bisection over the
- * spring (width >= 1/(2N) of t: at most ~log2(2N/eps) < MDR_ENG_ITER). */
+ * spring (width >= 1/(2N) of t: at most ~log2(2N/eps) < MDR_ENG_ITER).
+ * A point on the target side of u by at most U's rounding bound
+ * (mdr_e_Utol) is a root to working precision (not one below it: a
+ * landing aims at the fold's U plus that bound, and would take the fold
+ * for its landing again, without end): in spring 0, g = e (s + b (h - e)) cancels as
+ * x -> 0, U is noisy by ~1e3 eps of its terms there, and Newton crept
+ * through that noise ulp by ulp past the cap (f32 jump-in of a 1 m sphere
+ * on 64 springs, make stress). */
 static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, uint16_t k,
                                 MDR_T ta, MDR_T fa, MDR_T tb, MDR_T fb, MDR_SFX(mdr_e_pt) *out)
 {
@@ -391,7 +398,7 @@ static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int 
             hi = t;
         }
         tn = df != MDR_K(0.0) ? t - fv / df : t;
-        if (fv == MDR_K(0.0) ||
+        if ((fv >= MDR_K(0.0) && fv <= MDR_SFX(mdr_e_Utol)(b, &p)) ||
             MDR_SFX(mdr_m_fabs)(hi - lo) <= MDR_K(4.0) * MDR_EPS * MDR_SFX(mdr_m_fabs)(t)) {
             *out = p;
             return true;
