@@ -8,7 +8,9 @@
 #   make size       flash, RAM, instance sizes and step stack depth per core
 #   make cross      cross builds + symbol checks (Cortex-M0/M4F/M7, RV32IMAC/IMAFC)
 #   make target-test  the target-independent tests on QEMU (Cortex-M4F, M3)
-#   make bench      step time on the host, instructions per step on the M4F and M3
+#   make bench      benchmark matrix (time, instructions, error) -> host_tests/bench/
+#   make stress     numerical stress sweep (STRESS=long: the dense one)
+#   make fuzz       libFuzzer targets, FUZZ_TIME s each (fuzz-replay: the corpus)
 #   make tables     regenerate lib/src/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
 #
@@ -34,7 +36,7 @@ LIB_SRC := $(MDR_SRC_ALL)
 LIB_DEPS := $(MDR_DEPS) $(wildcard lib/src/*.c port/*/mdr_port.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
@@ -46,7 +48,7 @@ $(B)/host/%.o: lib/src/%.c $(LIB_DEPS)
 $(B)/host/libmdr.a: $(B)/host/mdr_f32.o $(B)/host/mdr_f64.o $(B)/host/mdr_q31.o $(B)/host/mdr_status.o
 	$(CROSS_COMPILE)ar rcs $@ $^
 
-$(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h $(B)/host/libmdr.a
+$(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h examples/tip_csv.h $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
 
 $(B)/host/afm_demo: examples/afm_demo.c $(B)/host/libmdr.a
@@ -99,6 +101,50 @@ SAN_TESTS := test_unit test_vectors test_engine test_q31
 san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 	@for t in $(SAN_TESTS); do echo "== sanitized $$t"; ./$(B)/san/$$t || exit 1; done
 
+# Numerical stress sweep (host_tests/stress.c): every parameter over its
+# range and beyond, f32/f64/q31; short grids in make test, STRESS=long for
+# the dense ones (minutes).
+STRESS ?= short
+$(B)/host/stress: host_tests/stress.c $(B)/host/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(B)/host/libmdr.a -lm -o $@
+stress: $(B)/host/stress
+	./$(B)/host/stress $(STRESS)
+
+# Fuzzing (host_tests/fuzz/): libFuzzer targets for the init functions
+# (fuzz_init), the tabulated-profile parser and gap tables (fuzz_table) and
+# the step functions with arbitrary input sequences (fuzz_step), built with
+# clang -fsanitize=fuzzer,address,undefined. make fuzz runs each for
+# FUZZ_TIME seconds (10 in make test; make fuzz FUZZ_TIME=600 for a long
+# run) from the committed corpus plus a working corpus in build/fuzz/; an
+# input that fails is copied into host_tests/fuzz/corpus/<target>/ (commit
+# it: from then on it is a regression test) and the run fails.
+# make fuzz-replay runs the committed corpus through the same targets built
+# with gcc and ASan+UBSan (host_tests/fuzz/replay.c), no libFuzzer needed.
+FUZZ_TARGETS := init step table
+FUZZ_TIME ?= 10
+FUZZ_HDRS := host_tests/fuzz/fuzz.h host_tests/fuzz/fuzz_engine_t.h host_tests/fuzz/fuzz_init_t.h examples/tip_csv.h
+FUZZ_CFLAGS := -std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -Iport/host -Iexamples
+$(B)/fuzz/fuzz_%: host_tests/fuzz/fuzz_%.c $(FUZZ_HDRS) $(LIB_SRC) $(LIB_DEPS)
+	@mkdir -p $(@D)
+	clang -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(FUZZ_CFLAGS) \
+	  $< $(LIB_SRC) -lm -o $@
+$(B)/san/replay_%: host_tests/fuzz/fuzz_%.c host_tests/fuzz/replay.c $(FUZZ_HDRS) $(B)/san/libmdr.a
+	$(HOSTCC) $(FUZZ_CFLAGS) -O1 -g $(SAN) $< host_tests/fuzz/replay.c $(B)/san/libmdr.a -lm -o $@
+fuzz-replay: $(addprefix $(B)/san/replay_,$(FUZZ_TARGETS))
+	@for t in $(FUZZ_TARGETS); do printf '== fuzz corpus %s: ' $$t; \
+	  ./$(B)/san/replay_$$t host_tests/fuzz/corpus/$$t || exit 1; done
+fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ_TARGETS))
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	  w=$(B)/fuzz/work_$$t; rm -rf $(B)/fuzz/art_$$t; mkdir -p $$w $(B)/fuzz/art_$$t; \
+	  if ./$(B)/fuzz/fuzz_$$t -max_total_time=$(FUZZ_TIME) -timeout=10 -rss_limit_mb=2048 \
+	       -artifact_prefix=$(B)/fuzz/art_$$t/ $$w host_tests/fuzz/corpus/$$t > $(B)/fuzz/$$t.log 2>&1; then \
+	    echo "== fuzz $$t: $$(grep -o 'Done [0-9]* runs in [0-9]* second' $(B)/fuzz/$$t.log | tail -1)s, \
+	      coverage $$(grep -o 'cov: [0-9]*' $(B)/fuzz/$$t.log | tail -1 | cut -d' ' -f2), no failure"; \
+	  else \
+	    tail -40 $(B)/fuzz/$$t.log; cp $(B)/fuzz/art_$$t/* host_tests/fuzz/corpus/$$t/; \
+	    echo "fuzz $$t: failing input copied to host_tests/fuzz/corpus/$$t/ (commit it)"; exit 1; \
+	  fi; done
+
 # The README's test command. Installs what is missing (deps), then: host
 # tests (unit, lib vs committed ref vectors, ref vs closed forms, lib vs GSL
 # directly, CLI), the same under ASan+UBSan, the q31 bit-exactness across
@@ -107,10 +153,13 @@ san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 test: deps
 	$(MAKE) --no-print-directory host-tests
 	$(MAKE) --no-print-directory san-tests
+	$(MAKE) --no-print-directory fuzz-replay
+	$(MAKE) --no-print-directory fuzz
+	$(MAKE) --no-print-directory stress
 	$(MAKE) --no-print-directory q31-exact
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
-	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 # The q31 step is integer arithmetic: the same inputs must give the same
 # outputs whatever the compiler and optimisation level (a difference means

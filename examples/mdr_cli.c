@@ -45,6 +45,7 @@
 #include <string.h>
 
 #include "mdr.h"
+#include "tip_csv.h"
 
 enum { CMD_EQ, CMD_CRITICAL, CMD_CURVE, CMD_STRESS, CMD_CYCLE, CMD_TABLE };
 
@@ -112,55 +113,43 @@ static long parse_list(const char *s, double **out)
     return n;
 }
 
-/* CSV of r,f (optional header line, '#' comments) -> arrays; count or -1 */
+/* CSV of r,f (examples/tip_csv.h) -> malloc'd arrays; count or -1 */
 static long read_table(const char *file, double **r, double **f)
 {
-    FILE *fp = fopen(file, "r");
-    char line[256];
-    long n = 0, cap = 0;
-    double *rr = NULL, *ff = NULL;
+    FILE *fp = fopen(file, "rb");
+    char *text = NULL;
+    size_t len = 0, cap = 0, got;
+    long n = -1;
     if (fp == NULL) {
         return -1;
     }
-    while (fgets(line, sizeof line, fp) != NULL) {
-        double a, b;
-        char tail[2];
-        if (line[0] == '#' || line[0] == '\n') {
-            continue;
-        }
-        if (sscanf(line, " %lf , %lf %1s", &a, &b, tail) != 2) {
-            if (n == 0 && rr == NULL && strchr(line, 'r') != NULL) {
-                continue; /* header */
+    do {
+        if (len == cap) {
+            char *t = realloc(text, cap = cap ? 2 * cap : 65536);
+            if (t == NULL) {
+                break;
             }
+            text = t;
+        }
+        got = fread(text + len, 1, cap - len, fp);
+        len += got;
+    } while (got > 0);
+    if (!ferror(fp) && feof(fp)) {
+        size_t lines = tip_csv_lines(text, len) + 1;
+        *r = malloc(lines * sizeof **r);
+        *f = malloc(lines * sizeof **f);
+        if (*r != NULL && *f != NULL) {
+            n = tip_csv_parse(text, len, *r, *f, lines);
+        }
+        if (n < 0) {
+            free(*r);
+            free(*f);
+            *r = *f = NULL;
             n = -1;
-            break;
         }
-        if (n == cap) {
-            double *nr, *nf;
-            cap = cap ? 2 * cap : 256;
-            nr = realloc(rr, (size_t)cap * sizeof *rr);
-            nf = realloc(ff, (size_t)cap * sizeof *ff);
-            if (nr == NULL || nf == NULL) {
-                free(nr ? nr : rr);
-                free(nf ? nf : ff);
-                fclose(fp);
-                return -1;
-            }
-            rr = nr;
-            ff = nf;
-        }
-        rr[n] = a;
-        ff[n] = b;
-        n++;
     }
     fclose(fp);
-    if (n < 0) {
-        free(rr);
-        free(ff);
-        return -1;
-    }
-    *r = rr;
-    *f = ff;
+    free(text);
     return n;
 }
 

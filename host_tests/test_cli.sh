@@ -142,6 +142,18 @@ expect2 cycle --profile table --E 1e6 --w 0.05 --control grips --path 0,1e-6 --s
 expect2 cycle --profile table --file /nonexistent --E 1e6 --w 0.05 --control grips --path 0,1 --steps-per-segment 1
 printf 'r,f\n0,0\n2e-6,1e-9\n1e-6,2e-9\n' >"$TMP/bad.csv"
 expect2 cycle --profile table --file "$TMP/bad.csv" --E 1e6 --w 0.05 --control grips --path 0,1e-9 --steps-per-segment 1
+# the tip file parser (examples/tip_csv.h): malformed lines, a NUL byte and
+# an over-long line are refused; comments, blank lines and CRLF are accepted
+for body in 'r,f\n0,0\n1e-6,x\n' 'r,f\n0,0\n1e-6\n' 'r,f\nr,f\n0,0\n1e-6,1e-9\n' '0,0\n1e-6,1e-9\n2e-6,4e-9,7\n' \
+    '0,0\n1e-6,1e-9\0\n2e-6,4e-9\n'; do
+    printf "$body" >"$TMP/bad.csv"
+    expect2 table --profile table --file "$TMP/bad.csv" --springs 16
+done
+{ printf '0,0\n'; printf '%0300d\n' 1; } >"$TMP/bad.csv"
+expect2 table --profile table --file "$TMP/bad.csv" --springs 16
+printf '# tip\r\nr,f\r\n\r\n0, 0\r\n# mid\r\n1e-6 ,5e-14\r\n2e-6,2e-13\r\n3e-6,4.5e-13' >"$TMP/ok.csv"
+$MDR table --profile table --file "$TMP/ok.csv" --springs 8 --name crlf >"$TMP/crlf.c" &&
+    [ "$(grep -c '^    {' "$TMP/crlf.c")" -eq 9 ] && ok || bad "tip file with comments, CRLF, no final newline"
 expect2 table $P
 expect2 table --profile paraboloid --R 1e-5 --a-max 1e-6 --name 9lives
 expect2 eq --profile table --file "$TMP/tip.csv" --E 1 --w 1 --a 1

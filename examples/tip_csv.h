@@ -1,0 +1,76 @@
+/*
+ * tip_csv.h: the tabulated-profile (measured tip) reader of the mdr CLI, as a
+ * parser of a text held in memory, so that the CLI and the fuzz target
+ * (host_tests/fuzz/fuzz_table.c) run the same code.
+ *
+ * Format: one "r,f" pair per line, radius r and gap f(r) in metres (any
+ * strtod number, spaces around the comma allowed); empty lines and lines
+ * starting with '#' are skipped; the first data line may instead be a
+ * header (a line that does not parse and contains 'r', e.g. "r,f"). A line
+ * is at most TIP_CSV_LINE_MAX - 1 characters; a NUL byte, a longer line, or
+ * any other line that does not parse makes the whole text malformed. Values
+ * are not checked here: mdr_table_init_gap_*() validates them (r[0] = 0,
+ * strictly increasing, finite).
+ */
+#ifndef TIP_CSV_H
+#define TIP_CSV_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#define TIP_CSV_LINE_MAX 256
+
+/* Lines in text: an upper bound of the number of pairs it can hold. */
+static inline size_t tip_csv_lines(const char *text, size_t len)
+{
+    size_t i, n = len > 0;
+    for (i = 0; i + 1 < len; i++) {
+        n += text[i] == '\n';
+    }
+    return n;
+}
+
+/* Parse len bytes of text (no NUL terminator needed) into r[], f[] of
+ * capacity cap. Returns the number of pairs, -1 when the text is malformed,
+ * -2 when it holds more than cap pairs. */
+static inline long tip_csv_parse(const char *text, size_t len, double *r, double *f, size_t cap)
+{
+    size_t pos = 0, n = 0;
+    int header_ok = 1;
+    while (pos < len) {
+        char line[TIP_CSV_LINE_MAX], tail[2];
+        const char *nl = memchr(text + pos, '\n', len - pos);
+        size_t l = (nl != NULL ? (size_t)(nl - text) : len) - pos;
+        double a, b;
+        if (l >= sizeof line || memchr(text + pos, '\0', l) != NULL) {
+            return -1;
+        }
+        memcpy(line, text + pos, l);
+        line[l] = '\0';
+        pos += l + 1;
+        if (l > 0 && line[l - 1] == '\r') {
+            line[--l] = '\0';
+        }
+        if (l == 0 || line[0] == '#') {
+            continue;
+        }
+        if (sscanf(line, " %lf , %lf %1s", &a, &b, tail) != 2) {
+            if (header_ok && strchr(line, 'r') != NULL) {
+                header_ok = 0;
+                continue;
+            }
+            return -1;
+        }
+        header_ok = 0;
+        if (n == cap) {
+            return -2;
+        }
+        r[n] = a;
+        f[n] = b;
+        n++;
+    }
+    return (long)n;
+}
+
+#endif /* TIP_CSV_H */

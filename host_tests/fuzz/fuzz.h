@@ -1,0 +1,138 @@
+/*
+ * fuzz.h: what the libFuzzer targets of host_tests/fuzz/ share: a reader of
+ * the fuzzer's bytes, the mapping of bytes to physical values, and the
+ * checks every call must pass (FZ_CHECK aborts, so libFuzzer and the replay
+ * of the regression corpus report it as a crash):
+ *   - a call returns MDR_OK or a named status (mdr_status_str knows it);
+ *     a step never returns MDR_E_NOCONV (its contract: not expected);
+ *   - a refused call leaves its instance and its outputs as they were (for
+ *     the engines: except the sticky flags, which report the refusal);
+ *   - every output of an accepted call is finite;
+ *   - an engine state stays inside its table: 0 <= a <= x_max, a > 0 iff in
+ *     contact, the edge's spring k holds a (x_k <= a <= x_{k+1}), F = 0 when
+ *     separated, and the Hess rule holds after every accepted step:
+ *     g(a) - dl_w(a) <= d <= g(a) - dl_adv(a) up to rounding (DESIGN 2).
+ * Built with clang -fsanitize=fuzzer,address,undefined (make fuzz); the same
+ * sources with replay.c run the committed corpus under gcc in make test.
+ */
+#ifndef FUZZ_H
+#define FUZZ_H
+
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mdr.h"
+
+#define FZ_CHECK(cond)                                                                   \
+    do {                                                                                 \
+        if (!(cond)) {                                                                   \
+            fprintf(stderr, "fuzz check failed: %s (%s:%d)\n", #cond, __FILE__, __LINE__); \
+            abort();                                                                     \
+        }                                                                                \
+    } while (0)
+
+/* the fuzzer's bytes, read front to back; zeros once they run out */
+typedef struct {
+    const uint8_t *p;
+    size_t n;
+} fz_in;
+
+static inline uint8_t fz_u8(fz_in *in)
+{
+    uint8_t v = 0;
+    if (in->n > 0) {
+        v = *in->p++;
+        in->n--;
+    }
+    return v;
+}
+
+static inline uint32_t fz_u32(fz_in *in)
+{
+    uint32_t v = 0;
+    int i;
+    for (i = 0; i < 4; i++) {
+        v = v << 8 | fz_u8(in);
+    }
+    return v;
+}
+
+/* A value of magnitude 10^lo ... 10^hi (log-uniform over 2^24 steps), with
+ * one selector byte that also yields the edge cases: raw float bits (NaN,
+ * inf, subnormals, anything), zero, negatives, and the extremes. */
+static inline double fz_val(fz_in *in, double lo, double hi)
+{
+    uint8_t sel = fz_u8(in);
+    uint32_t bits = fz_u32(in);
+    double u = (double)(bits & 0xffffffu) / 16777215.0, v = pow(10.0, lo + (hi - lo) * u);
+    switch (sel & 15u) {
+    case 0: {
+        float f;
+        memcpy(&f, &bits, sizeof f);
+        return (double)f;
+    }
+    case 1:
+        return 0.0;
+    case 2:
+        return -v;
+    case 3:
+        return (sel & 16u) ? pow(10.0, lo) : pow(10.0, hi);
+    default:
+        return v;
+    }
+}
+
+static inline void fz_status(mdr_status st)
+{
+    FZ_CHECK(st <= 0);
+    FZ_CHECK(strcmp(mdr_status_str(st), "unknown status") != 0);
+}
+
+static inline int fz_fin(double x)
+{
+    return isfinite(x);
+}
+
+/* the f32 and f64 engine checks, written once */
+#define FZ_T float
+#define FZ_SFX(name) name##_f32
+#include "fuzz_engine_t.h"
+#undef FZ_T
+#undef FZ_SFX
+#define FZ_T double
+#define FZ_SFX(name) name##_f64
+#include "fuzz_engine_t.h"
+#undef FZ_T
+#undef FZ_SFX
+
+/* q31 engine: the same checks in its integer formats */
+static inline void fz_check_q31(const mdr_engine_q31 *e, const mdr_engine_q31 *before, mdr_status st,
+                         const mdr_step_q31 *out, const mdr_step_q31 *out0)
+{
+    const mdr_table_q31 *tab = e->tab;
+    fz_status(st);
+    FZ_CHECK(st != MDR_E_NOCONV);
+    if (st != MDR_OK) {
+        mdr_engine_q31 x = *e;
+        x.flags = before->flags;
+        FZ_CHECK(memcmp(&x, before, sizeof x) == 0);
+        FZ_CHECK(memcmp(out, out0, sizeof *out) == 0);
+        return;
+    }
+    FZ_CHECK(e->a >= 0 && e->a <= MDR_Q30_ONE);
+    FZ_CHECK(e->contact ? e->a > 0 : e->a == 0 && e->F == 0);
+    FZ_CHECK(e->k < tab->n);
+    if (e->contact) {
+        /* a in spring k: k L/n <= a <= (k+1) L/n, a Q1.30 of L */
+        int64_t lo = (int64_t)e->k << (30 - tab->m), hi = (int64_t)(e->k + 1) << (30 - tab->m);
+        FZ_CHECK(e->a >= lo && e->a <= hi);
+    }
+    FZ_CHECK(out->F == e->F && out->d == e->d && out->a == e->a);
+}
+
+#endif /* FUZZ_H */

@@ -1,0 +1,53 @@
+/*
+ * fuzz_engine_t.h: the checks of one float engine step (fuzz.h, top), for
+ * FZ_T float (_f32) and double (_f64). Rounding allowance of the Hess band:
+ * FZ_BAND_ULPS ulps of the size of its terms |g| + dl_w + |d|, plus what
+ * the edge's tolerance of 4 eps in t makes of D = g - c t.
+ */
+#define FZ_BAND_ULPS 512
+
+static inline void FZ_SFX(fz_check)(const FZ_SFX(mdr_engine) *e, const FZ_SFX(mdr_engine) *before,
+                             mdr_status st, const FZ_SFX(mdr_step) *out,
+                             const FZ_SFX(mdr_step) *out0)
+{
+    const FZ_SFX(mdr_table) *tab = e->tab;
+    const double eps = sizeof(FZ_T) == sizeof(float) ? (double)FLT_EPSILON : DBL_EPSILON;
+    fz_status(st);
+    FZ_CHECK(st != MDR_E_NOCONV); /* "not expected" (mdr_engine_t.h) */
+    if (st != MDR_OK) {
+        FZ_SFX(mdr_engine) x = *e;
+        x.flags = before->flags;
+        FZ_CHECK(memcmp(&x, before, sizeof x) == 0);
+        FZ_CHECK(memcmp(out, out0, sizeof *out) == 0);
+        return;
+    }
+    FZ_CHECK(fz_fin((double)out->z) && fz_fin((double)out->d) && fz_fin((double)out->F) &&
+             fz_fin((double)out->a));
+    FZ_CHECK(fz_fin((double)out->a0) && fz_fin((double)out->d0) && fz_fin((double)out->F0));
+    FZ_CHECK(fz_fin((double)out->a1) && fz_fin((double)out->d1) && fz_fin((double)out->F1));
+    FZ_CHECK(fz_fin((double)e->work) && fz_fin((double)e->dissipated) && fz_fin((double)e->last_cycle));
+    FZ_CHECK(e->a >= 0 && (double)e->a <= (double)tab->n * (double)tab->h * (1 + 4 * eps));
+    FZ_CHECK(e->contact ? e->a > 0 : e->a == 0 && e->F == 0);
+    FZ_CHECK(e->k < tab->n);
+    if (e->contact) {
+        double a = (double)e->a, t = (double)e->t, g = (double)e->g, d = (double)e->d;
+        double dlw = (double)e->c_w * t, dla = (double)e->c_adv * t;
+        /* g'(a) of the table's quadratic in spring k (mdr_e_at): the edge
+         * is solved to 4 eps in t, which moves D = g - c t by
+         * 4 eps t |2 t g' - c| (steep next to a flattened tip's rim) */
+        double h = (double)tab->h, xk = (double)e->k * h, ex = a - xk;
+        double sl = ((double)tab->node[e->k + 1].g - (double)tab->node[e->k].g) / h;
+        double dg = sl + 6.0 * (double)tab->node[e->k].q / (h * h * h) * (h - 2 * ex);
+        double tol = FZ_BAND_ULPS * eps * (fabs(g) + dlw + fabs(d)) +
+                     8 * eps * t * (2 * t * fabs(dg) + (double)e->c_w);
+        FZ_CHECK(a >= xk * (1 - 4 * eps) && a <= (xk + (double)tab->h) * (1 + 4 * eps));
+        if (!(d >= g - dlw - tol && (d <= g - dla + tol || (tab->wall && e->k == tab->n - 1u)))) {
+            fprintf(stderr, "Hess band: d %.17g, g - dl_w %.17g, g - dl_adv %.17g, tol %.3g (a %.17g, k %u)\n", d,
+                    g - dlw, g - dla, tol, a, (unsigned)e->k);
+        }
+        /* at a wall (flat punch rim) the edge is held: d may pass the approach side */
+        FZ_CHECK(d >= g - dlw - tol && (d <= g - dla + tol || (tab->wall && e->k == tab->n - 1u)));
+    }
+    FZ_CHECK(out->F == e->F && out->d == e->d && out->a == e->a);
+}
+#undef FZ_BAND_ULPS

@@ -1,0 +1,91 @@
+/*
+ * fuzz_table.c: the tabulated-profile parser (examples/tip_csv.h, the mdr
+ * CLI's reader of measured tips) and mdr_table_init_gap on what it accepts.
+ * Bytes: springs (2 ... 4096, a power of two), E*, w, then the CSV text.
+ * The pairs go to mdr_table_init_gap_f64 and _f32; a table they accept must
+ * be finite, and carries an f32, f64 and q31 engine through a fixed
+ * approach and retraction under fixed grips (0 -> the table's largest
+ * depth -> twice the adhesive reach below 0), checked as fuzz.h says.
+ */
+#include "fuzz.h"
+#include "tip_csv.h"
+
+#define PMAX 4096
+#define NMAX 4096
+static double r[PMAX], f[PMAX];
+static float r32[PMAX], f32[PMAX];
+static mdr_node_f64 n64[NMAX + 1];
+static mdr_node_f32 n32[NMAX + 1];
+static mdr_node_q31 nq[NMAX + 1];
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_in in = {data, size};
+    uint16_t n = (uint16_t)(2u << fz_u8(&in) % 12);
+    double E = pow(10.0, 3 + 9 * fz_u8(&in) / 255.0), w = pow(10.0, -6 + 7 * fz_u8(&in) / 255.0);
+    long m = tip_csv_parse((const char *)in.p, in.n, r, f, PMAX), i;
+    mdr_table_f64 t64;
+    mdr_table_f32 t32;
+    mdr_table_q31 tq;
+    mdr_engine_f64 e64;
+    mdr_engine_f32 e32;
+    mdr_engine_q31 eq;
+    mdr_status st;
+    int ok32 = 0, okq = 0;
+    double gmax = 0, dmax, dmin;
+    FZ_CHECK(m >= -2 && m <= PMAX);
+    if (m < 0 || m > 65535) {
+        return 0;
+    }
+    for (i = 0; i < m; i++) {
+        r32[i] = (float)r[i];
+        f32[i] = (float)f[i];
+    }
+    st = mdr_table_init_gap_f32(&t32, n32, n, r32, f32, (uint16_t)m);
+    fz_status(st);
+    if (st == MDR_OK) {
+        for (i = 0; i <= n; i++) {
+            FZ_CHECK(fz_fin((double)n32[i].g) && fz_fin((double)n32[i].G) && fz_fin((double)n32[i].q));
+        }
+        ok32 = mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, (float)w, 0.0f) == MDR_OK;
+    }
+    st = mdr_table_init_gap_f64(&t64, n64, n, r, f, (uint16_t)m);
+    fz_status(st);
+    if (st != MDR_OK || mdr_engine_init_f64(&e64, &t64, E, w, w, 0.0) != MDR_OK) {
+        return 0;
+    }
+    for (i = 0; i <= n; i++) {
+        FZ_CHECK(fz_fin(n64[i].g) && fz_fin(n64[i].G) && fz_fin(n64[i].q));
+        gmax = fmax(gmax, n64[i].g);
+    }
+    okq = mdr_table_q31_from_f64(&tq, nq, &t64) == MDR_OK && mdr_engine_init_q31_f64(&eq, &tq, E, w, w, 0.0) == MDR_OK;
+    dmax = gmax;
+    dmin = -2 * e64.c_w * sqrt(n * t64.h);
+    for (i = 1; i <= 96; i++) {
+        double d = i <= 32 ? dmax * i / 32.0 : dmax + (dmin - dmax) * (i - 32) / 64.0;
+        mdr_engine_f64 b64 = e64;
+        mdr_step_f64 o64, o64_0;
+        memset(&o64, 0x5a, sizeof o64);
+        o64_0 = o64;
+        st = mdr_engine_step_d_f64(&e64, d, &o64);
+        fz_check_f64(&e64, &b64, st, &o64, &o64_0);
+        if (ok32) {
+            mdr_engine_f32 b = e32;
+            mdr_step_f32 o, o0;
+            memset(&o, 0x5a, sizeof o);
+            o0 = o;
+            st = mdr_engine_step_d_f32(&e32, (float)d, &o);
+            fz_check_f32(&e32, &b, st, &o, &o0);
+        }
+        if (okq) {
+            mdr_engine_q31 b = eq;
+            mdr_step_q31 o, o0;
+            double dq = d / (double)eq.D0 * 536870912.0;
+            memset(&o, 0x5a, sizeof o);
+            o0 = o;
+            st = mdr_engine_step_d_q31(&eq, (int32_t)fmax(-2147483648.0, fmin(2147483647.0, dq)), &o);
+            fz_check_q31(&eq, &b, st, &o, &o0);
+        }
+    }
+    return 0;
+}
