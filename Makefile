@@ -380,7 +380,7 @@ target-test:
 	  *) echo "target mps2-an385: MDR_STEP_SECTION did not place the step in RAM (0x$$a)"; exit 1;; esac
 
 # ---- dependencies --------------------------------------------------------------
-DEB_PKGS := gcc clang make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
+DEB_PKGS := gcc clang libclang-rt-14-dev make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
             qemu-system-arm
 deps:
 	@missing=""; \
