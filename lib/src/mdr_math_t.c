@@ -183,6 +183,9 @@ MDR_T MDR_SFX(mdr_m_exp)(MDR_T x)
 {
     MDR_T kf, r, p;
     int k, i;
+    if (x != x) {
+        return x; /* NaN: no conversion to int (found by fuzz_init: a power law with n = 1e-10) */
+    }
     if (x > MDR_K(1.5) * (MDR_T)MDR_EXP_MAX * MDR_LN2) {
         return MDR_MAXV * MDR_K(2.0);
     }
