@@ -338,12 +338,10 @@ MDR_T MDR_SFX(mdr_m_atan2p)(MDR_T y, MDR_T x)
 #define MDR_SINCOS_XMAX MDR_K(1.0e9)
 void MDR_SFX(mdr_m_sincos)(MDR_T x, MDR_T *s, MDR_T *c)
 {
-    MDR_T kf = x * MDR_K(0.636619772367581343075535053490057448);
+    const bool in = x <= MDR_SINCOS_XMAX && x >= -MDR_SINCOS_XMAX;
+    MDR_T kf = in ? x * MDR_K(0.636619772367581343075535053490057448) : MDR_K(0.0);
     long k;
-    MDR_ASSERT(x <= MDR_SINCOS_XMAX && x >= -MDR_SINCOS_XMAX);
-    if (!(kf <= MDR_K(1.0e9) && kf >= MDR_K(-1.0e9))) {
-        kf = MDR_K(0.0); /* outside the domain (assert compiled out): no UB */
-    }
+    MDR_ASSERT(in); /* compiled out, an x outside gives garbage, not UB */
     k = (long)(kf < MDR_K(0.0) ? kf - MDR_K(0.5) : kf + MDR_K(0.5));
     MDR_T r = ((x - (MDR_T)k * MDR_PIO2_1) - (MDR_T)k * MDR_PIO2_2) - (MDR_T)k * MDR_PIO2_3;
     MDR_T r2 = r * r, ps = MDR_K(0.0), pc = MDR_K(0.0), sr, cr;
@@ -606,11 +604,21 @@ void MDR_SFX(mdr_m_struve01)(MDR_T z, MDR_T zl, MDR_T *h0, MDR_T *h1, MDR_T *h0p
  * integer nearest qh (qh - n exact), so that sin and cos keep their ulp
  * accuracy for any number of wavelengths (a plain reduction of z loses
  * |z| eps, and leaves the domain of mdr_m_sincos past 1e9). */
+/* The integer nearest v (ties to even), exactly: beyond 2^23 (f32) resp.
+ * 2^52 (f64) every float is an integer. */
+static MDR_T MDR_SFX(mdr_m_nearest_int)(MDR_T v)
+{
+    const MDR_T big = MDR_K(0.5) / MDR_EPS;
+    if (!(v < big && v > -big)) {
+        return v;
+    }
+    return v < MDR_K(0.0) ? (v - big) + big : (v + big) - big;
+}
+
 void MDR_SFX(mdr_m_struve01_wave)(MDR_T x, MDR_T lambda, MDR_T *z, MDR_T *h0, MDR_T *h1, MDR_T *h0p,
                                   MDR_T *zh0_h1)
 {
-    const MDR_T big = MDR_K(0.5) / MDR_EPS; /* 2^23 (f32), 2^52 (f64): ulp 1 */
-    MDR_T qh, ql, zh, zl, n, rh, rl, sv, cv;
+    MDR_T qh, ql, zh, zl, rh, rl, sv, cv;
     MDR_SFX(mdr_m_turns)(x, lambda, &qh, &ql);
     MDR_SFX(mdr_m_two_pi)(qh, ql, &zh, &zl);
     *z = zh;
@@ -618,18 +626,16 @@ void MDR_SFX(mdr_m_struve01_wave)(MDR_T x, MDR_T lambda, MDR_T *z, MDR_T *h0, MD
         MDR_SFX(mdr_m_struve01)(zh, zl, h0, h1, h0p, zh0_h1);
         return;
     }
-    /* Whole turns off twice, each step exact: n nearest qh (beyond big
-     * every float is an integer), f = qh - n; where qh's ulp is >= 1 the
-     * turns lie in ql too, so fh + fl = f + ql (Fast2Sum: f is a multiple
-     * of ulp(qh) >= 2|ql|, or 0) loses its nearest integer m again. The
-     * callers keep qh < big^2 (mdr_c_domain: x/lambda < MDR_WAVY_QMAX), so
-     * |ql| < big and fh - m is exact; the phase keeps an error of
+    /* Whole turns off twice, each step exact: f = qh - (integer nearest
+     * qh); where qh's ulp is >= 1 the turns lie in ql too, so fh + fl =
+     * f + ql (Fast2Sum: f is a multiple of ulp(qh) >= 2|ql|, or 0) loses
+     * its nearest integer again. The callers keep x/lambda < MDR_WAVY_QMAX
+     * = (2^23)^2 resp. (2^52)^2 (mdr_c_domain), so |ql| < 2^23 resp. 2^52
+     * and that step is exact too; the phase keeps an error of
      * ~eps max(1, ulp(qh)) turns. */
-    n = qh < big ? (qh + big) - big : qh;
     {
-        MDR_T f = qh - n, fh = f + ql, fl = (f - fh) + ql, m, r;
-        m = (fh < MDR_K(0.0) ? (fh - big) + big : (fh + big) - big);
-        r = fh - m;
+        MDR_T f = qh - MDR_SFX(mdr_m_nearest_int)(qh), fh = f + ql, fl = (f - fh) + ql;
+        MDR_T r = fh - MDR_SFX(mdr_m_nearest_int)(fh);
         fh = r + fl;
         MDR_SFX(mdr_m_two_pi)(fh, (r - fh) + fl, &rh, &rl);
     }

@@ -137,7 +137,6 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     mdr_engine_q31 z;
     MDR_T L, cw, ca, M, D0, kap, sc;
     uint8_t k = 0;
-    bool zero;
     mdr_status st;
     if (e == NULL || tab == NULL || tab->node == NULL) {
         return MDR_E_NULL;
@@ -164,17 +163,16 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
      * unit (sh) acts on zeros only. With D0 >= Dg instead, a cycle whose
      * dl_w(L) is far below L/1024 used a sliver of Q2.29 (make stress:
      * 3.6e-4 of max|F| for a 1 m punch with w/E* = 1e-18 m). */
-    zero = M > MDR_K(0.0) && MDR_SFX(mdr_q_table_zero)(tab);
-    if (zero) {
+    if (M > MDR_K(0.0) && MDR_SFX(mdr_q_table_zero)(tab)) {
         D0 = MDR_SFX(mdr_m_ldexp)(MDR_K(1.0), MDR_SFX(mdr_q_log2_ceil)(M));
-    } else if (M > (MDR_T)tab->Dg) {
-        int kk = MDR_SFX(mdr_q_log2_ceil)(M) - MDR_SFX(mdr_q_log2_ceil)((MDR_T)tab->Dg);
-        if (kk > 60) {
-            return MDR_E_OVERFLOW;
+    } else {
+        if (M > (MDR_T)tab->Dg) {
+            int kk = MDR_SFX(mdr_q_log2_ceil)(M) - MDR_SFX(mdr_q_log2_ceil)((MDR_T)tab->Dg);
+            if (kk > 60) {
+                return MDR_E_OVERFLOW;
+            }
+            k = (uint8_t)kk;
         }
-        k = (uint8_t)kk;
-    }
-    if (!zero) {
         D0 = MDR_SFX(mdr_m_ldexp)((MDR_T)tab->Dg, k);
     }
     z.tab = tab;
