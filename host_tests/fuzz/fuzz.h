@@ -98,7 +98,10 @@ static inline int fz_fin(double x)
     return isfinite(x);
 }
 
-/* the f32 and f64 engine checks, written once */
+/* the controls of fz_step_<type>() */
+enum { FZ_D, FZ_F, FZ_Z };
+
+/* the f32 and f64 engine checks and steps, written once */
 #define FZ_T float
 #define FZ_SFX(name) name##_f32
 #include "fuzz_engine_t.h"
@@ -133,6 +136,25 @@ static inline void fz_check_q31(const mdr_engine_q31 *e, const mdr_engine_q31 *b
         FZ_CHECK(e->a >= lo && e->a <= hi);
     }
     FZ_CHECK(out->F == e->F && out->d == e->d && out->a == e->a);
+}
+
+/* One q31 step (raw Q2.29 input), checked; an input beyond the documented
+ * +-2 units saturates and sets MDR_FLAG_SAT. */
+static inline mdr_status fz_step_q31(mdr_engine_q31 *e, int ctl, int32_t v, mdr_step_q31 *out)
+{
+    const mdr_engine_q31 before = *e;
+    mdr_step_q31 o0;
+    mdr_status st;
+    memset(out, 0x5a, sizeof *out);
+    o0 = *out;
+    st = ctl == FZ_D ? mdr_engine_step_d_q31(e, v, out)
+         : ctl == FZ_F ? mdr_engine_step_F_q31(e, v, out)
+                       : mdr_engine_step_z_q31(e, v, out);
+    fz_check_q31(e, &before, st, out, &o0);
+    if (v > 2 * MDR_Q29_ONE || v < -2 * MDR_Q29_ONE) {
+        FZ_CHECK(st != MDR_OK || (e->flags & MDR_FLAG_SAT));
+    }
+    return st;
 }
 
 #endif /* FUZZ_H */

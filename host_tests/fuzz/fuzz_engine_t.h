@@ -50,4 +50,20 @@ static inline void FZ_SFX(fz_check)(const FZ_SFX(mdr_engine) *e, const FZ_SFX(md
     }
     FZ_CHECK(out->F == e->F && out->d == e->d && out->a == e->a);
 }
+
+/* One step of control ctl (FZ_D, FZ_F or FZ_Z) to v, checked as above; the
+ * step's output in *out (a 0x5a pattern where the step wrote nothing). */
+static inline mdr_status FZ_SFX(fz_step)(FZ_SFX(mdr_engine) *e, int ctl, FZ_T v, FZ_SFX(mdr_step) *out)
+{
+    const FZ_SFX(mdr_engine) before = *e;
+    FZ_SFX(mdr_step) o0;
+    mdr_status st;
+    memset(out, 0x5a, sizeof *out);
+    o0 = *out;
+    st = ctl == FZ_D ? FZ_SFX(mdr_engine_step_d)(e, v, out)
+         : ctl == FZ_F ? FZ_SFX(mdr_engine_step_F)(e, v, out)
+                       : FZ_SFX(mdr_engine_step_z)(e, v, out);
+    FZ_SFX(fz_check)(e, &before, st, out, &o0);
+    return st;
+}
 #undef FZ_BAND_ULPS

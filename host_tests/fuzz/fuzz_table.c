@@ -63,28 +63,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     dmin = -2 * e64.c_w * sqrt(n * t64.h);
     for (i = 1; i <= 96; i++) {
         double d = i <= 32 ? dmax * i / 32.0 : dmax + (dmin - dmax) * (i - 32) / 64.0;
-        mdr_engine_f64 b64 = e64;
-        mdr_step_f64 o64, o64_0;
-        memset(&o64, 0x5a, sizeof o64);
-        o64_0 = o64;
-        st = mdr_engine_step_d_f64(&e64, d, &o64);
-        fz_check_f64(&e64, &b64, st, &o64, &o64_0);
+        mdr_step_f64 o64;
+        mdr_step_f32 o32;
+        mdr_step_q31 oq;
+        fz_step_f64(&e64, FZ_D, d, &o64);
         if (ok32) {
-            mdr_engine_f32 b = e32;
-            mdr_step_f32 o, o0;
-            memset(&o, 0x5a, sizeof o);
-            o0 = o;
-            st = mdr_engine_step_d_f32(&e32, (float)d, &o);
-            fz_check_f32(&e32, &b, st, &o, &o0);
+            fz_step_f32(&e32, FZ_D, (float)d, &o32);
         }
         if (okq) {
-            mdr_engine_q31 b = eq;
-            mdr_step_q31 o, o0;
             double dq = d / (double)eq.D0 * 536870912.0;
-            memset(&o, 0x5a, sizeof o);
-            o0 = o;
-            st = mdr_engine_step_d_q31(&eq, (int32_t)fmax(-2147483648.0, fmin(2147483647.0, dq)), &o);
-            fz_check_q31(&eq, &b, st, &o, &o0);
+            fz_step_q31(&eq, FZ_D, (int32_t)fmax(-2147483648.0, fmin(2147483647.0, dq)), &oq);
         }
     }
     return 0;
