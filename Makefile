@@ -71,7 +71,7 @@ $(B)/host/test_engine: host_tests/test_engine.c host_tests/bench_matrix.h host_t
 
 $(B)/host/test_unit: host_tests/test_unit.c $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/host/test_vectors: host_tests/test_vectors.c $(B)/host/libmdr.a
+$(B)/host/test_vectors: host_tests/test_vectors.c host_tests/fl.h $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
 $(B)/host/test_ref: host_tests/test_ref.c $(REF_SRC) ref/mdr_ref.h
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) -lcmocka $(GSL_LIBS) -o $@
@@ -85,7 +85,7 @@ $(B)/san/libmdr.a: $(LIB_SRC) $(LIB_DEPS)
 	ar rcs $@ $(B)/san/mdr_f32.o $(B)/san/mdr_f64.o $(B)/san/mdr_q31.o $(B)/san/mdr_status.o
 $(B)/san/test_unit: host_tests/test_unit.c $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_vectors: host_tests/test_vectors.c $(B)/san/libmdr.a
+$(B)/san/test_vectors: host_tests/test_vectors.c host_tests/fl.h $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
 $(B)/san/test_engine: host_tests/test_engine.c host_tests/bench_matrix.h host_tests/scenes.h $(B)/host/gen_tip.c $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/host/gen_tip.c $(B)/san/libmdr.a -lcmocka -lm -o $@
@@ -105,7 +105,7 @@ san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 # range and beyond, f32/f64/q31; short grids in make test, STRESS=long for
 # the dense ones (minutes).
 STRESS ?= short
-$(B)/host/stress: host_tests/stress.c $(B)/host/libmdr.a
+$(B)/host/stress: host_tests/stress.c host_tests/fl.h $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(B)/host/libmdr.a -lm -o $@
 stress: $(B)/host/stress
 	./$(B)/host/stress $(STRESS)

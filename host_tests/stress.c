@@ -47,6 +47,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fl.h"
 #include "mdr.h"
 
 #define GOAL 1e-5
@@ -176,6 +177,23 @@ typedef struct {
 
 static const char *const cname[4] = {"", "load", "grips", "machine"};
 
+/* The error of an f32 state (d32, F32) against the f64 state (d, F) at
+ * radius a (header): |dF|/Fs and |dd|/ds with ds = |g| + dl and
+ * Fs = 2E*(a ds + |G|), g and G of the f64 contact (or, where
+ * mdr_profile_eval refuses, from the state itself). */
+static double state_err(const scene *s, const mdr_contact_f64 *c64, double a, double dl, double d, double F,
+                        double d32, double F32)
+{
+    double g, G, ds, Fs;
+    if (mdr_profile_eval_f64(c64, a, &g, NULL, &G) != MDR_OK) {
+        g = d + dl;
+        G = a * d - F / (2 * s->E);
+    }
+    ds = fabs(g) + dl;
+    Fs = 2 * s->E * (a * ds + fabs(G));
+    return fmax(fabs(F32 - F) / Fs, fabs(d32 - d) / ds);
+}
+
 /* equilibrium at a in both arithmetics; error as in the header */
 static void eq_pair(const scene *s, const mdr_contact_f32 *c32, const mdr_contact_f64 *c64, double a,
                     const char *band)
@@ -202,14 +220,7 @@ static void eq_pair(const scene *s, const mdr_contact_f32 *c32, const mdr_contac
             !fin(q32.K_I) || !fin(q32.G)) {
             err = NAN;
         } else if (s64 == MDR_OK) {
-            double g, G, ds, Fs;
-            if (mdr_profile_eval_f64(c64, (double)af, &g, NULL, &G) != MDR_OK) {
-                g = q64.d + q64.dl;
-                G = q64.a * q64.d - q64.F / (2 * s->E);
-            }
-            ds = fabs(g) + q64.dl;
-            Fs = 2 * s->E * ((double)af * ds + fabs(G));
-            err = fmax(fabs((double)q32.F - q64.F) / Fs, fabs((double)q32.d - q64.d) / ds);
+            err = state_err(s, c64, (double)af, q64.dl, q64.d, q64.F, (double)q32.d, (double)q32.F);
         }
     }
     if (s64 == MDR_OK && (!fin(q64.d) || !fin(q64.F))) {
@@ -238,23 +249,16 @@ static void crit_pair(const scene *s, const mdr_contact_f32 *c32, const mdr_cont
         mdr_critstate_f64 k64;
         double km = 2 * s->E * a0 / 3, err = 0;
         mdr_status s32 = mdr_critical_f32(c32, (uint8_t)ctl, (float)km, a0f, &k32);
-        mdr_status s64 = mdr_critical_f64(c64, (uint8_t)ctl, (double)(float)km, (double)a0f, &k64);
+        mdr_status s64 = mdr_critical_f64(c64, (uint8_t)ctl, fl(km), (double)a0f, &k64);
         snprintf(rn, sizeof rn, "%s critical %s", s->profile, cname[ctl]);
         snprintf(where, sizeof where, "p=%.3g,%.3g,%.3g E=%.3g w=%.3g", s->p[0], s->p[1], s->p[2], s->E, s->w);
         if (s32 == MDR_OK) {
             if (!fin(k32.a) || !fin(k32.d) || !fin(k32.F)) {
                 err = NAN;
             } else if (s64 == MDR_OK && k64.a > 0) {
-                /* as eq_pair: d and F relative to the size of their terms */
-                double dl = sqrt(2 * M_PI * k64.a * s->w / s->E), g, G, ds, Fs;
-                if (mdr_profile_eval_f64(c64, k64.a, &g, NULL, &G) != MDR_OK) {
-                    g = k64.d + dl;
-                    G = k64.a * k64.d - k64.F / (2 * s->E);
-                }
-                ds = fabs(g) + dl;
-                Fs = 2 * s->E * (k64.a * ds + fabs(G));
                 err = fmax(fabs((double)k32.a - k64.a) / k64.a,
-                           fmax(fabs((double)k32.d - k64.d) / ds, fabs((double)k32.F - k64.F) / Fs));
+                           state_err(s, c64, k64.a, sqrt(2 * M_PI * k64.a * s->w / s->E), k64.d, k64.F,
+                                     (double)k32.d, (double)k32.F));
             }
         }
         note(reg(rn), s32, err, where);
@@ -378,14 +382,14 @@ static void run_scene(const scene *s, const rad *rl, size_t nr, double xmax_engi
     }
     /* f64 at the float-rounded parameters: the same scene */
     {
-        const double pd[3] = {p32[0], p32[1], p32[2]};
+        const double pd[3] = {fl(s->p[0]), fl(s->p[1]), fl(s->p[2])};
         scene sd = *s;
-        if (mdr_contact_init_f64(&c64, s->kind, pd, (double)(float)s->E, (double)(float)s->w) != MDR_OK) {
+        if (mdr_contact_init_f64(&c64, s->kind, pd, fl(s->E), fl(s->w)) != MDR_OK) {
             return;
         }
         memcpy(sd.p, pd, sizeof pd);
-        sd.E = (double)(float)s->E;
-        sd.w = (double)(float)s->w;
+        sd.E = fl(s->E);
+        sd.w = fl(s->w);
         for (i = 0; i < nr; i++) {
             eq_pair(&sd, &c32, &c64, rl[i].s * s->len, rl[i].band);
         }

@@ -33,6 +33,7 @@
 #include <stdlib.h>
 #include <cmocka.h>
 
+#include "fl.h"
 #include "mdr.h"
 
 #ifndef MDR_VECTORS_DIR
@@ -89,17 +90,6 @@ static int read_row(FILE *f, double *v, int n)
         p = (*end == ',') ? end + 1 : end;
     }
     return 1;
-}
-
-/* x rounded to float and back: the value a float caller passes. Through a
- * volatile: GCC 12.2 -O2 (x86-64) dropped the rounding of
- * {(double)(float)v[2], (double)(float)v[3], ...} when its SLP vectoriser
- * paired it with the float conversions of the same values (seen here; with
- * -fno-tree-slp-vectorize the rounding is kept). */
-static double fl(double x)
-{
-    volatile float f = (float)x;
-    return f;
 }
 
 static void note(int kind, int ar, int q, double e)
