@@ -361,6 +361,23 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol)(const MDR_SFX(mdr_e_branch) *b, con
             MDR_SFX(mdr_m_fabs)(b->ka) * (MDR_SFX(mdr_m_fabs)(p->x) * Dm + MDR_SFX(mdr_m_fabs)(p->G)));
 }
 
+/* The rounding bound of mdr_e_U at p in spring 0, from the magnitudes of
+ * the terms of the interpolation itself: there g = e (s + b (h - e)) and
+ * G = e^2 (s/2 + b (h/2 - e/3)) are small differences of terms of size
+ * e |s| (s + b h ~ g'(0) cancels for a profile flat at 0), so the error of
+ * U is ~eps e |s|, far above mdr_e_Utol's eps |g| (measured: residuals of
+ * ~1e3 eps |g| that Newton crept through past the iteration cap). */
+static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol0)(const MDR_SFX(mdr_e_branch) *b, const MDR_SFX(mdr_e_pt) *p)
+{
+    const MDR_SFX(mdr_node) *n0 = &b->tab->node[0];
+    MDR_T x = p->x, h = b->tab->h;
+    MDR_T as = MDR_SFX(mdr_m_fabs)((n0[1].g - n0->g) * b->ih), ab = MDR_SFX(mdr_m_fabs)(n0->q * b->b6);
+    MDR_T Dm = MDR_SFX(mdr_m_fabs)(n0->g) + x * (as + ab * (h + x)) + MDR_SFX(mdr_m_fabs)(b->c * p->t);
+    MDR_T Gm = x * x * (MDR_K(0.5) * as + ab * (MDR_K(0.5) * h + x));
+    return MDR_K(8.0) * MDR_EPS *
+           (MDR_SFX(mdr_m_fabs)(b->al) * Dm + MDR_SFX(mdr_m_fabs)(b->ka) * (x * Dm + Gm));
+}
+
 /* Root of dir*(U - u) in spring k between ta (value < 0) and tb (>= 0):
  * Newton from the secant point, safeguarded as rtsafe (Press et al.,
  * Numerical Recipes, 2nd ed., 9.4): bisection whenever Newton leaves the
@@ -369,13 +386,13 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol)(const MDR_SFX(mdr_e_branch) *b, con
  * plain Newton wander inside the bracket with steps of a few ulps; the
  * halving rule bounds the iterations by those of bisection over the
  * spring (width >= 1/(2N) of t: at most ~log2(2N/eps) < MDR_ENG_ITER).
- * A point on the target side of u by at most U's rounding bound
- * (mdr_e_Utol) is a root to working precision (not one below it: a
- * landing aims at the fold's U plus that bound, and would take the fold
- * for its landing again, without end): in spring 0, g = e (s + b (h - e)) cancels as
- * x -> 0, U is noisy by ~1e3 eps of its terms there, and Newton crept
- * through that noise ulp by ulp past the cap (f32 jump-in of a 1 m sphere
- * on 64 springs, make stress). */
+ * In spring 0 a point on the target side of u by at most U's rounding
+ * bound there (mdr_e_Utol0) is a root to working precision (not one below
+ * it: a landing aims past the fold, and would take the fold for its
+ * landing again): the bracket's low end is t = 0, so bisection to 4 eps
+ * in t has no bound as the root approaches 0, and Newton crept through
+ * U's noise ulp by ulp past the cap (f32 jump-ins of a 1 m sphere and of
+ * a 1 cm sphere on 64 springs, make stress). */
 static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, uint16_t k,
                                 MDR_T ta, MDR_T fa, MDR_T tb, MDR_T fb, MDR_SFX(mdr_e_pt) *out)
 {
@@ -398,7 +415,7 @@ static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int 
             hi = t;
         }
         tn = df != MDR_K(0.0) ? t - fv / df : t;
-        if ((fv >= MDR_K(0.0) && fv <= MDR_SFX(mdr_e_Utol)(b, &p)) ||
+        if ((k == 0u && fv >= MDR_K(0.0) && fv <= MDR_SFX(mdr_e_Utol0)(b, &p)) || fv == MDR_K(0.0) ||
             MDR_SFX(mdr_m_fabs)(hi - lo) <= MDR_K(4.0) * MDR_EPS * MDR_SFX(mdr_m_fabs)(t)) {
             *out = p;
             return true;
