@@ -122,7 +122,8 @@ mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_
  * @param[in] r  radii [m], r[0] = 0, strictly increasing, finite
  * @param[in] f  gap f(r_i) [m], finite
  * @param[in] m  points, >= MDR_TABLE_MIN_POINTS
- * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_TABLE
+ * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_TABLE,
+ *         MDR_E_OVERFLOW (a table entry beyond the arithmetic's range)
  */
 mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                        uint16_t n, const MDR_T *r, const MDR_T *f, uint16_t m);
@@ -134,7 +135,7 @@ mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node
  * @param[in] h  spring width [m], finite > 0
  * @param[in] g  n+1 values [m], finite
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_PARAM (h),
- *         MDR_E_TABLE (g[0] != 0)
+ *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range)
  */
 mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                      uint16_t n, MDR_T h, const MDR_T *g);
@@ -160,8 +161,10 @@ mdr_status MDR_SFX(mdr_engine_init)(MDR_SFX(mdr_engine) *e, const MDR_SFX(mdr_ta
  * @param[in]  d    indentation [m], finite (negative: a gap)
  * @param[out] out  what happened; written only on MDR_OK
  * @return MDR_OK; MDR_E_NULL, MDR_E_NONFINITE; MDR_E_OUTSIDE (state
- *         unchanged, MDR_FLAG_OUTSIDE set); MDR_E_NOCONV (not expected:
- *         bisection backs every iteration; state unchanged, flag set)
+ *         unchanged, MDR_FLAG_OUTSIDE set); MDR_E_OVERFLOW (d, F, z or the
+ *         energy sums would leave the arithmetic's range: state unchanged);
+ *         MDR_E_NOCONV (not expected: bisection backs every iteration;
+ *         state unchanged, flag set)
  *
  * Cost: O(1) when the edge is pinned; otherwise O(1) plus one comparison per
  * node the edge passes (it moves from where it was) and a safeguarded

@@ -17,7 +17,12 @@
 
 #define MDR_GAUSS2_A MDR_K(0.211324865405187117745425609748689) /* (1 - 1/sqrt3)/2 */
 #define MDR_GAUSS2_B MDR_K(0.788675134594812882254574390251311) /* (1 + 1/sqrt3)/2 */
-#define MDR_ENG_ITER (MDR_MANT_BITS + 8) /* root / fold iteration cap */
+/* Root / fold iteration cap: exponent bisection where a bracket spans
+ * orders of magnitude (spring 0; <= log2 of the exponent range, < 12), then
+ * halving to 4 eps in t (<= MANT_BITS + 2), each halving possibly beside
+ * one Newton step (mdr_e_root forces a bisection after a Newton step that
+ * did not at least halve the residual) */
+#define MDR_ENG_ITER (2 * (MDR_MANT_BITS + 16))
 
 /* ---------------------------------------------------------------- tables */
 
@@ -45,6 +50,14 @@ static mdr_status MDR_SFX(mdr_e_finish)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_nod
         MDR_SFX(mdr_e_kahan)(&s, &cmp, MDR_K(0.5) * h * (node[i].g + node[i + 1].g) + node[i].q);
         node[i + 1].G = s;
         node[i + 1].t = MDR_SQRT(h * (MDR_T)(i + 1));
+    }
+    /* finite inputs can still overflow the arithmetic (a gap of 1e306 m
+     * in one sample of a tip file: fuzz_table) */
+    for (i = 0; i <= n; i++) {
+        if (!MDR_SFX(mdr_m_isfinite)(node[i].g) || !MDR_SFX(mdr_m_isfinite)(node[i].G) ||
+            !MDR_SFX(mdr_m_isfinite)(node[i].q)) {
+            return MDR_E_OVERFLOW;
+        }
     }
     tab->node = node;
     tab->h = h;
@@ -358,7 +371,41 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol)(const MDR_SFX(mdr_e_branch) *b, con
     MDR_T Dm = MDR_SFX(mdr_m_fabs)(p->g) + MDR_SFX(mdr_m_fabs)(b->c * p->t);
     return MDR_K(8.0) * MDR_EPS *
            (MDR_SFX(mdr_m_fabs)(b->al) * Dm +
-            MDR_SFX(mdr_m_fabs)(b->ka) * (MDR_SFX(mdr_m_fabs)(p->x) * Dm + MDR_SFX(mdr_m_fabs)(p->G)));
+            MDR_SFX(mdr_m_fabs)(b->ka) * (MDR_SFX(mdr_m_fabs)(p->x) * Dm + MDR_SFX(mdr_m_fabs)(p->G)) +
+            MDR_K(2.0) * MDR_MINV); /* U's absolute floor: 8x the one mdr_e_root accepts as 0 */
+}
+
+/* The bisection point of [lo, hi] (either order; t >= 0): their mean, or,
+ * where they span more than a factor of 4 (only spring 0 can: its low end
+ * is t = 0), the power of two halfway between their exponents, so that a
+ * root or fold at any t > 0 is reached in ~log2(exponent span) + MANT_BITS
+ * halvings, not log2(hi/t) + MANT_BITS, which has no bound (the cap was hit
+ * by a landing 1e-4 of the spring's width from t = 0, fuzz_step). No sqrt:
+ * frexp/ldexp. */
+static MDR_STEP_FN bool MDR_SFX(mdr_e_wide)(MDR_T lo, MDR_T hi)
+{
+    return lo < hi ? hi > MDR_K(4.0) * lo : lo > MDR_K(4.0) * hi;
+}
+
+static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_mid)(MDR_T lo, MDR_T hi)
+{
+    MDR_T a = lo < hi ? lo : hi, c = lo < hi ? hi : lo;
+    int ea, ec;
+    if (!MDR_SFX(mdr_e_wide)(lo, hi)) {
+        return MDR_K(0.5) * (lo + hi);
+    }
+    /* below t = 2^-63 (f32) resp. 2^-511 (f64) x = t^2 leaves the normal
+     * range and dU/dt, a multiple of x under load, reads 0 (stable): the
+     * lowest bisection point is there */
+    (void)MDR_SFX(mdr_m_frexp)(a, &ea);
+    if (!(a > MDR_K(0.0)) || ea < -MDR_EXP_BIAS / 2) {
+        ea = -MDR_EXP_BIAS / 2;
+    }
+    (void)MDR_SFX(mdr_m_frexp)(c, &ec);
+    if (ec - ea < 2) { /* c is itself that small */
+        return MDR_K(0.5) * (lo + hi);
+    }
+    return MDR_SFX(mdr_m_ldexp)(MDR_K(1.0), (ea + ec) / 2); /* strictly inside (a, c) */
 }
 
 /* The rounding bound of mdr_e_U at p in spring 0, from the magnitudes of
@@ -384,8 +431,16 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol0)(const MDR_SFX(mdr_e_branch) *b, co
  * bracket or does not at least halve the step before the last one. Near
  * the root the rounding noise of U (the cancellation in x D - G) makes
  * plain Newton wander inside the bracket with steps of a few ulps; the
- * halving rule bounds the iterations by those of bisection over the
- * spring (width >= 1/(2N) of t: at most ~log2(2N/eps) < MDR_ENG_ITER).
+ * halving rules bound the iterations by twice those of bisection
+ * (MDR_ENG_ITER).
+ * A point where |U - u| is below U's absolute resolution, eps MDR_MINV,
+ * is a root (U near the underflow threshold: a machine base of 2e-38 m in
+ * f32, fuzz_step); mdr_e_Utol, the landing shift, is at least 8x that.
+ * Converged when hi - lo <= 4 eps t, or when x = t^2 across the whole
+ * bracket spans a few subnormal spacings, (hi - lo) max(lo, hi) <= 8 eps
+ * MDR_MINV (a contact radius below the arithmetic's smallest normal
+ * number, reached by depths like 1e-39 m in f32: fuzz_step; measured at
+ * the bracket's top, not at t, which near t = 0 would accept any bracket).
  * In spring 0 a point on the target side of u by at most U's rounding
  * bound there (mdr_e_Utol0) is a root to working precision (not one below
  * it: a landing aims past the fold, and would take the fold for its
@@ -396,14 +451,19 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_e_Utol0)(const MDR_SFX(mdr_e_branch) *b, co
 static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int dir, MDR_T u, uint16_t k,
                                 MDR_T ta, MDR_T fa, MDR_T tb, MDR_T fb, MDR_SFX(mdr_e_pt) *out)
 {
-    MDR_T lo = ta, hi = tb, t, dx = tb - ta, dxold = dx;
+    MDR_T lo = ta, hi = tb, t, dx = tb - ta, dxold = dx, fprev = MDR_K(0.0);
     int it;
     /* the secant point; the midpoint when ta is itself at the target
      * (fa = 0: the landing of a jump-in at t = 0, where mdr_e_Utol is 0, or
      * any fold whose U equals the target exactly): the secant would return
      * ta, the fold, and the step would fold there again until
      * MDR_E_NOCONV (found with an 8-spring table, test_engine) */
-    t = fa < MDR_K(0.0) && fb - fa > MDR_K(0.0) ? ta + (tb - ta) * (-fa / (fb - fa)) : MDR_K(0.5) * (ta + tb);
+    t = fa < MDR_K(0.0) && fb - fa > MDR_K(0.0) ? ta + (tb - ta) * (-fa / (fb - fa)) : MDR_SFX(mdr_e_mid)(ta, tb);
+    if (!((t - ta) * (t - tb) < MDR_K(0.0))) {
+        /* the secant point rounded onto or past an end (a bracket from 0.014
+         * to 1.2e-11 gave t = 0, the trivial root U(0) = 0: fuzz_step) */
+        t = MDR_SFX(mdr_e_mid)(ta, tb);
+    }
     for (it = 0; it < MDR_ENG_ITER; it++) {
         MDR_SFX(mdr_e_pt) p = MDR_SFX(mdr_e_at)(b, k, t);
         MDR_T fv = (MDR_T)dir * (MDR_SFX(mdr_e_U)(b, &p) - u);
@@ -415,20 +475,31 @@ static MDR_STEP_FN bool MDR_SFX(mdr_e_root)(const MDR_SFX(mdr_e_branch) *b, int 
             hi = t;
         }
         tn = df != MDR_K(0.0) ? t - fv / df : t;
-        if ((k == 0u && fv >= MDR_K(0.0) && fv <= MDR_SFX(mdr_e_Utol0)(b, &p)) || fv == MDR_K(0.0) ||
-            MDR_SFX(mdr_m_fabs)(hi - lo) <= MDR_K(4.0) * MDR_EPS * MDR_SFX(mdr_m_fabs)(t)) {
+        if ((k == 0u && fv >= MDR_K(0.0) && fv <= MDR_SFX(mdr_e_Utol0)(b, &p)) ||
+            MDR_SFX(mdr_m_fabs)(fv) <= MDR_K(2.0) * MDR_EPS * MDR_MINV || /* below U's resolution */
+            MDR_SFX(mdr_m_fabs)(hi - lo) <= MDR_K(4.0) * MDR_EPS * t ||
+            MDR_SFX(mdr_m_fabs)(hi - lo) * (lo > hi ? lo : hi) <= MDR_K(8.0) * MDR_EPS * MDR_MINV) {
             *out = p;
             return true;
         }
         if (!((tn - lo) * (tn - hi) < MDR_K(0.0)) ||
-            MDR_SFX(mdr_m_fabs)(MDR_K(2.0) * fv) > MDR_SFX(mdr_m_fabs)(dxold * df)) {
-            tn = MDR_K(0.5) * (lo + hi);
+            MDR_SFX(mdr_m_fabs)(MDR_K(2.0) * fv) > MDR_SFX(mdr_m_fabs)(dxold * df) ||
+            MDR_SFX(mdr_e_wide)(lo, hi) ||
+            (it > 0 && (fv < MDR_K(0.0)) == (fprev < MDR_K(0.0)) &&
+             MDR_SFX(mdr_m_fabs)(fv) > MDR_K(0.5) * MDR_SFX(mdr_m_fabs)(fprev))) {
+            /* out of the bracket, a step not half the one before last,
+             * a bracket spanning orders of magnitude, or a residual that
+             * did not halve on the same side: Newton is not converging
+             * (it crept ulp by ulp where U's computed value and slope
+             * disagree: U's noise in spring 0, terms underflowing) */
+            tn = MDR_SFX(mdr_e_mid)(lo, hi);
         } else if (MDR_SFX(mdr_m_fabs)(tn - t) <= MDR_EPS * MDR_SFX(mdr_m_fabs)(t)) {
             *out = MDR_SFX(mdr_e_at)(b, k, tn);
             return true;
         }
         dxold = dx;
         dx = tn - t;
+        fprev = fv;
         t = tn;
     }
     *out = MDR_SFX(mdr_e_at)(b, k, hi);
@@ -442,7 +513,7 @@ static MDR_STEP_FN MDR_SFX(mdr_e_pt) MDR_SFX(mdr_e_fold)(const MDR_SFX(mdr_e_bra
 {
     int it;
     for (it = 0; it < MDR_ENG_ITER; it++) {
-        MDR_T tm = MDR_K(0.5) * (ta + tb);
+        MDR_T tm = MDR_SFX(mdr_e_mid)(ta, tb);
         MDR_SFX(mdr_e_pt) p;
         if (tm == ta || tm == tb) {
             break;
@@ -742,8 +813,11 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T 
         o.d0 = o.d1 = d;
         o.F0 = o.F1 = F;
     }
-    if (!MDR_SFX(mdr_m_isfinite)(d) || !MDR_SFX(mdr_m_isfinite)(F) ||
-        !MDR_SFX(mdr_m_isfinite)(o.z)) {
+    /* the energy sums too: F dd of a flat punch driven 1e19 m deep is
+     * finite in F and d and not in float (fuzz_step) */
+    if (!MDR_SFX(mdr_m_isfinite)(d) || !MDR_SFX(mdr_m_isfinite)(F) || !MDR_SFX(mdr_m_isfinite)(o.z) ||
+        !MDR_SFX(mdr_m_isfinite)(s.work) || !MDR_SFX(mdr_m_isfinite)(s.work_c) ||
+        !MDR_SFX(mdr_m_isfinite)(s.dissipated)) {
         return MDR_E_OVERFLOW;
     }
     MDR_ASSERT(s.k < tab->n); /* the edge lies in spring k: x_k <= a <= x_{k+1} */
