@@ -154,7 +154,8 @@ mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
  *                 of the machine's compliance is <= 2^-30 (1 + kappa))
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM, MDR_E_CONTROL
  *         (k_m < 0 or kappa > 2^16), MDR_E_SIZE (table header invalid),
- *         MDR_E_OVERFLOW (D0 beyond 2^60 Dg)
+ *         MDR_E_OVERFLOW (D0 beyond 2^60 Dg, or a unit D0, F0 beyond float
+ *         range)
  */
 mdr_status mdr_engine_init_q31_f32(mdr_engine_q31 *e, const mdr_table_q31 *tab, float E, float w,
                                    float w_adv, float k_m);

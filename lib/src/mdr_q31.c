@@ -29,6 +29,7 @@
 #include "mdr_hooks.h"
 
 #define MDR_Q_ITER 64 /* root / fold iteration cap (bisection alone needs 31) */
+#define MDR_Q_UTOL 4  /* rounding bound of mdr_q_U, LSB of Q2.29 */
 
 /* v / 2^s rounded to nearest (ties toward +inf), s >= 1, |v| < 2^62 (0 for
  * s >= 63). Written without >> of a negative value (implementation-defined
@@ -41,6 +42,31 @@ MDR_INLINE MDR_STEP_FN int64_t mdr_q_rs(int64_t v, unsigned s)
     }
     r = v + ((int64_t)1 << (s - 1u));
     return r >= 0 ? r >> s : ~(~r >> s);
+}
+
+/* v = h 2^s + l with 0 <= l < 2^s (floor division, no shift of a negative
+ * value), so that mdr_q_rs(a v, s) = a h + mdr_q_rs(a l, s) exactly: a
+ * product rescaled without forming a v, which overflows int64 where |v| is
+ * large (dU/dt of a strongly curved table: mdr_q_dU). */
+MDR_INLINE MDR_STEP_FN void mdr_q_split(int64_t v, unsigned s, int64_t *h, int64_t *l)
+{
+    const int64_t d = (int64_t)1 << s;
+    int64_t q = v / d, r = v - q * d;
+    if (r < 0) {
+        r += d;
+        q -= 1;
+    }
+    *h = q;
+    *l = r;
+}
+
+/* mdr_q_rs(a v, s) for |a| <= 2^31, 1 <= s <= 31 and |v| up to 2^62 / |a|
+ * 2^s of its own size: the product through mdr_q_split */
+MDR_INLINE MDR_STEP_FN int64_t mdr_q_mulrs(int64_t a, int64_t v, unsigned s)
+{
+    int64_t h, l;
+    mdr_q_split(v, s, &h, &l);
+    return a * h + mdr_q_rs(a * l, s);
 }
 
 /* v * 2^s without a left shift of a negative value; |v| 2^s < 2^63 */
@@ -96,7 +122,7 @@ typedef struct {
     int32_t t, x; /* Q1.30 */
     int32_t g;    /* Q2.29 of D0 */
     int32_t G;    /* Q2.29 of L D0 */
-    int64_t dg;   /* slope g' L / D0, Q29 (|g'| L / D0 < 8) */
+    int64_t dg;   /* slope g' L / D0, Q29: s + n b (1 - 2e), up to ~8 + 2n within a spring */
     uint16_t k;
 } mdr_qp;
 
@@ -162,10 +188,35 @@ static MDR_STEP_FN int64_t mdr_q_U(const mdr_qb *b, const mdr_qp *p)
 }
 
 /* dU/dt at p, Q2.29 (int64): al (2 t g' - c) + ka x (2 t g' - 3 c) */
+/* (the same value as mdr_q_rs(al (tg - c) + ka mdr_q_rs(x (tg - 3c), 30),
+ * 30), without its int64 overflow: |g'| L/D0 is not bounded by the slopes'
+ * 8 within a spring, where n b (1 - 2e) adds up to 2n, and a sphere
+ * tabulated to 0.99 R overflowed al (tg - c), fuzz_step) */
 static MDR_STEP_FN int64_t mdr_q_dU(const mdr_qb *b, const mdr_qp *p)
 {
-    int64_t tg = mdr_q_rs((int64_t)p->t * p->dg, 29);
-    return mdr_q_rs(b->al * (tg - b->c) + b->ka * mdr_q_rs(p->x * (tg - 3 * (int64_t)b->c), 30), 30);
+    int64_t tg = mdr_q_mulrs(p->t, p->dg, 29), Ah, Al, Ph, Pl;
+    mdr_q_split(tg - b->c, 30, &Ah, &Al);
+    mdr_q_split(mdr_q_mulrs(p->x, tg - 3 * (int64_t)b->c, 30), 30, &Ph, &Pl);
+    return (b->al * Ah + b->ka * Ph) + mdr_q_rs(b->al * Al + b->ka * Pl, 30);
+}
+
+/* dU/dt >= 0 at p (stable), read from the sign of mdr_q_dU, and where that
+ * rounds to 0 from the sign of its terms al (tg - c) + ka x (tg - 3c): the
+ * first if not 0, else tg - 3c (x > 0 for t > 0). Under fixed load
+ * (al = 0) x (tg - 3c) rescaled by 2^-30 is 0 for t < 2^-15 (x < 2^-30),
+ * and the fold search took that for stable ground down to t = 0 (fuzz_step:
+ * a q31 load step to F = 0 landed on a = 0 in contact, d saturated). */
+static MDR_STEP_FN bool mdr_q_stable(const mdr_qb *b, const mdr_qp *p)
+{
+    int64_t d = mdr_q_dU(b, p), tg;
+    if (d != 0) {
+        return d > 0;
+    }
+    tg = mdr_q_mulrs(p->t, p->dg, 29);
+    if (b->al != 0 && tg != b->c) { /* al >= 0: the sign of al (tg - c) */
+        return tg > b->c;
+    }
+    return b->ka == 0 || tg - 3 * (int64_t)b->c >= 0;
 }
 
 /* Root of dir (U - u) in spring k between ta (< 0) and tb (>= 0): Newton
@@ -217,7 +268,7 @@ static MDR_STEP_FN mdr_qp mdr_q_fold(const mdr_qb *b, uint16_t k, int32_t ta, in
             break;
         }
         p = mdr_q_at(b, k, tm);
-        if (mdr_q_dU(b, &p) >= 0) {
+        if (mdr_q_stable(b, &p)) {
             ta = tm;
         } else {
             tb = tm;
@@ -239,7 +290,7 @@ static MDR_STEP_FN int mdr_q_scan(const mdr_qb *b, int dir, int64_t u, bool fold
     int64_t Wq = dir * mdr_q_U(b, p0);
     bool q_is_node = false;
     long j = dir > 0 ? (long)p0->k + 1 : (long)p0->k;
-    if (folds && mdr_q_dU(b, p0) < 0) {
+    if (folds && !mdr_q_stable(b, p0)) {
         *out = *p0;
         return MDR_Q_SCAN_FOLD;
     }
@@ -263,14 +314,14 @@ static MDR_STEP_FN int mdr_q_scan(const mdr_qb *b, int dir, int64_t u, bool fold
             int64_t Wf, fa = Wq - su;
             uint16_t fseg = seg;
             int32_t ta = tq, tb = pj.t;
-            if (mdr_q_dU(b, &pq) < 0) {
+            if (!mdr_q_stable(b, &pq)) {
                 if (!q_is_node) {
                     *out = pq;
                     return MDR_Q_SCAN_FOLD;
                 }
                 fseg = (uint16_t)(dir > 0 ? seg - 1 : seg + 1);
                 pq = mdr_q_at(b, fseg, tq);
-                if (mdr_q_dU(b, &pq) >= 0) {
+                if (mdr_q_stable(b, &pq)) {
                     *out = pq;
                     return MDR_Q_SCAN_FOLD;
                 }
@@ -428,7 +479,12 @@ static MDR_STEP_FN mdr_status mdr_q_step(mdr_engine_q31 *e, uint8_t ctl, int32_t
         if (o.jumps < 255u) {
             o.jumps++;
         }
-        r = mdr_q_scan(&b, dir, uf, false, &pf, &pl);
+        /* the landing aims past the rounding error of U (5 rounded terms,
+         * <= MDR_Q_UTOL LSB), so that a point next to the fold whose U
+         * equals uf but for rounding is not taken for the landing (it folds
+         * again there without end: a q31 load step on the wavy profile hit
+         * the jump cap, fuzz_step; mdr_e_Utol in the float engine) */
+        r = mdr_q_scan(&b, dir, uf + dir * MDR_Q_UTOL, false, &pf, &pl);
         if (r == MDR_Q_SCAN_NOCONV) {
             return mdr_q_refuse(e, MDR_FLAG_NOCONV, MDR_E_NOCONV);
         }

@@ -179,6 +179,12 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     z.L = tab->L;
     z.D0 = (float)D0;
     z.F0 = (float)(MDR_K(2.0) * E * L * D0);
+    /* the units as float: finite and > 0 (dl_w(L) enormous for w/E* huge,
+     * e.g. E* = 9e-42 Pa: fuzz_init) */
+    if (!MDR_SFX(mdr_m_isfinite)(M) || !MDR_SFX(mdr_m_isfinite)((MDR_T)z.D0) || !(z.D0 > 0.0f) ||
+        !MDR_SFX(mdr_m_isfinite)((MDR_T)z.F0) || !(z.F0 > 0.0f)) {
+        return MDR_E_OVERFLOW;
+    }
     z.sh = (uint8_t)(k + 1u);
     z.c_w = MDR_SFX(mdr_q_round)(cw / D0 * Q29);
     z.c_adv = MDR_SFX(mdr_q_round)(ca / D0 * Q29);
