@@ -396,7 +396,9 @@ static MDR_T MDR_SFX(mdr_c_abel)(const MDR_SFX(mdr_contact) *c, MDR_T r, MDR_T a
     /* panel 0 holds the 1/sqrt end point; the others are regular */
     sum = MDR_K(0.0);
     for (i = 0; i < np; i++) {
-        MDR_T u0 = U * (MDR_T)i / (MDR_T)np, u1 = U * (MDR_T)(i + 1) / (MDR_T)np;
+        /* U times a fraction: U * i overflows float for U > FLT_MAX/512
+         * (fuzz_init: a wavy contact of a = 3e36 m) */
+        MDR_T u0 = U * ((MDR_T)i / (MDR_T)np), u1 = U * ((MDR_T)(i + 1) / (MDR_T)np);
         sum += MDR_SFX(mdr_c_de)(c, r, u0, u1 - u0, false);
     }
     return sum;
