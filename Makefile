@@ -121,9 +121,8 @@ stress: $(B)/host/stress
 # input that fails is copied into host_tests/fuzz/corpus/<target>/ (commit
 # it: from then on it is a regression test) and the run fails.
 # make fuzz-replay runs the committed corpus through the same targets built
-# with gcc and ASan+UBSan (host_tests/fuzz/replay.c), no libFuzzer needed;
-# it is in make test. The short make fuzz run joins make test once the open
-# defect in host_tests/fuzz/open/ is fixed: its fixed-seed run finds it.
+# with gcc and ASan+UBSan (host_tests/fuzz/replay.c), no libFuzzer needed.
+# Both are in make test.
 FUZZ_TARGETS := init step table
 FUZZ_TIME ?=
 FUZZ_RUNS ?= 3000
@@ -160,11 +159,12 @@ test: deps
 	$(MAKE) --no-print-directory host-tests
 	$(MAKE) --no-print-directory san-tests
 	$(MAKE) --no-print-directory fuzz-replay
+	$(MAKE) --no-print-directory fuzz
 	$(MAKE) --no-print-directory stress
 	$(MAKE) --no-print-directory q31-exact
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
-	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) $(addprefix replay-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 # The q31 step is integer arithmetic: the same inputs must give the same
 # outputs whatever the compiler and optimisation level (a difference means

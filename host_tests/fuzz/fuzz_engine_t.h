@@ -2,7 +2,8 @@
  * fuzz_engine_t.h: the checks of one float engine step (fuzz.h, top), for
  * FZ_T float (_f32) and double (_f64). Rounding allowance of the Hess band:
  * FZ_BAND_ULPS ulps of the size of its terms |g| + dl_w + |d|, plus what
- * the edge's tolerance of 4 eps in t makes of D = g - c t.
+ * the edge's tolerance of 4 eps in t makes of D = g - c t, plus the
+ * arithmetic's subnormal spacing.
  */
 #define FZ_BAND_ULPS 512
 
@@ -27,7 +28,9 @@ static inline void FZ_SFX(fz_check)(const FZ_SFX(mdr_engine) *e, const FZ_SFX(md
     FZ_CHECK(fz_fin((double)out->a1) && fz_fin((double)out->d1) && fz_fin((double)out->F1));
     FZ_CHECK(fz_fin((double)e->work) && fz_fin((double)e->dissipated) && fz_fin((double)e->last_cycle));
     FZ_CHECK(e->a >= 0 && (double)e->a <= (double)tab->n * (double)tab->h * (1 + 4 * eps));
-    FZ_CHECK(e->contact ? e->a > 0 : e->a == 0 && e->F == 0);
+    /* the edge lives in t: a = t^2 underflows to 0 for radii below the
+     * smallest subnormal (f32 re-contact at d = 1.4e-45 m) */
+    FZ_CHECK(e->contact ? e->t > 0 : e->a == 0 && e->t == 0 && e->F == 0);
     FZ_CHECK(e->k < tab->n);
     if (e->contact) {
         double a = (double)e->a, t = (double)e->t, g = (double)e->g, d = (double)e->d;
@@ -38,8 +41,19 @@ static inline void FZ_SFX(fz_check)(const FZ_SFX(mdr_engine) *e, const FZ_SFX(md
         double h = (double)tab->h, xk = (double)e->k * h, ex = a - xk;
         double sl = ((double)tab->node[e->k + 1].g - (double)tab->node[e->k].g) / h;
         double dg = sl + 6.0 * (double)tab->node[e->k].q / (h * h * h) * (h - 2 * ex);
+        /* ... and the subnormal spacing of the arithmetic (radii, depths
+         * below its smallest normal number: mdr_e_root stops when x = t^2
+         * spans 16 eps MINV, which moves g by g' times that) */
+        const double minv = sizeof(FZ_T) == sizeof(float) ? (double)FLT_MIN : DBL_MIN;
         double tol = FZ_BAND_ULPS * eps * (fabs(g) + dlw + fabs(d)) +
-                     8 * eps * t * (2 * t * fabs(dg) + (double)e->c_w);
+                     8 * eps * t * (2 * t * fabs(dg) + (double)e->c_w) + 16 * eps * minv * (1 + fabs(dg));
+        if (e->k == 0 && a > 0) {
+            /* spring 0 accepts a root with U within mdr_e_Utol0 of the
+             * target: in depth 8 eps (Dm + Gm/x), Dm, Gm its magnitudes */
+            double b6 = 6.0 * fabs((double)tab->node[0].q) / (h * h * h), as = fabs(sl);
+            double Dm = a * (as + b6 * (h + a)) + (double)e->c_w * t, Gm = a * a * (0.5 * as + b6 * (0.5 * h + a));
+            tol += 16 * eps * (Dm + Gm / a);
+        }
         FZ_CHECK(a >= xk * (1 - 4 * eps) && a <= (xk + (double)tab->h) * (1 + 4 * eps));
         if (!(d >= g - dlw - tol && (d <= g - dla + tol || (tab->wall && e->k == tab->n - 1u)))) {
             fprintf(stderr, "Hess band: d %.17g, g - dl_w %.17g, g - dl_adv %.17g, tol %.3g (a %.17g, k %u)\n", d,
