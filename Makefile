@@ -10,6 +10,8 @@
 #   make target-test  the target-independent tests on QEMU (Cortex-M4F, M3)
 #   make bench      benchmark matrix (time, instructions, error) -> host_tests/bench/
 #   make stress     numerical stress sweep (STRESS=long: the dense one)
+#   make lint       cppcheck + clang-tidy (configuration: .clang-tidy,
+#                   .cppcheck-suppressions)
 #   make fuzz       libFuzzer targets, FUZZ_TIME s each (fuzz-replay: the corpus)
 #   make tables     regenerate lib/src/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
@@ -36,7 +38,7 @@ LIB_SRC := $(MDR_SRC_ALL)
 LIB_DEPS := $(MDR_DEPS) $(wildcard lib/src/*.c port/*/mdr_port.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: lint fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
@@ -157,6 +159,7 @@ fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ_TARGETS))
 # on QEMU.
 test: deps
 	$(MAKE) --no-print-directory host-tests
+	$(MAKE) --no-print-directory lint
 	$(MAKE) --no-print-directory san-tests
 	$(MAKE) --no-print-directory fuzz-replay
 	$(MAKE) --no-print-directory fuzz
@@ -164,7 +167,7 @@ test: deps
 	$(MAKE) --no-print-directory q31-exact
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
-	@echo "suites: $(words $(TESTS) cli $(SAN_TESTS) $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words $(TESTS) cli lint $(SAN_TESTS) $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 # The q31 step is integer arithmetic: the same inputs must give the same
 # outputs whatever the compiler and optimisation level (a difference means
@@ -384,9 +387,48 @@ target-test:
 	  case $$a in 2*) echo "target mps2-an385: the q31 step ran from RAM (MDR_STEP_SECTION, at 0x$$a)";; \
 	  *) echo "target mps2-an385: MDR_STEP_SECTION did not place the step in RAM (0x$$a)"; exit 1;; esac
 
+# ---- static analysis ----------------------------------------------------------
+# cppcheck and clang-tidy over the code that ships: lib/ (built for the host,
+# the Cortex-M4F and RV32IMAC ports), port/, examples/ and ref/. Configuration:
+# .clang-tidy (checks and why some are off) and .cppcheck-suppressions (what
+# cppcheck is told to ignore, each with its reason); every finding fails.
+LINT_LIB := lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c
+LINT_HOST := examples/mdr_cli.c examples/afm_demo.c ref/mdr_ref.c ref/mdr_refgen.c ref/vecdiff.c \
+             ref/gen_tables.c port/link_check.c port/sizes.c
+LINT_CM := port/cortex-m/semihost.c port/cortex-m/startup.c
+LINT_LC := -DMDR_LC_F32 -DMDR_LC_STRESS -DMDR_LC_Q31
+LINT_ARM := --target=arm-none-eabi $(MDR_CM_FLAGS_m4f) -isystem /usr/lib/arm-none-eabi/include
+# clang-tidy: one stamp per configuration and file (runs under make -j2)
+LINT_CFG_host := $(MDR_REQUIRED_CFLAGS) -Ilib/include -Iport/host
+LINT_CFG_m4f := $(MDR_REQUIRED_CFLAGS) $(LINT_ARM) -Ilib/include -Iport/cortex-m
+LINT_CFG_rv32 := $(MDR_REQUIRED_CFLAGS) --target=riscv32-unknown-elf -march=rv32imac -mabi=ilp32 \
+                 -Ilib/include -Iport/riscv
+LINT_CFG_app := -std=c99 -D_GNU_SOURCE $(LINT_LC) -Ilib/include -Iport/host -Iref
+LINT_CFG_cm := -std=c99 -ffreestanding $(LINT_ARM) -Ilib/include -Iport/cortex-m
+LINT_UNITS := $(foreach c,host m4f rv32,$(addprefix $(c):,$(LINT_LIB))) \
+              $(addprefix app:,$(LINT_HOST)) $(addprefix cm:,$(LINT_CM))
+lint_stamp = $(B)/lint/$(word 1,$(subst :, ,$(1)))/$(subst /,_,$(word 2,$(subst :, ,$(1)))).tidy
+define lint_rule
+$(call lint_stamp,$(1)): $(word 2,$(subst :, ,$(1))) .clang-tidy $(LIB_DEPS) $(wildcard examples/*.h ref/*.h)
+	@mkdir -p $$(@D)
+	@clang-tidy --quiet $$< -- $(LINT_CFG_$(word 1,$(subst :, ,$(1)))) > $$@.log 2>&1 || { cat $$@.log; exit 1; }
+	@echo "clang-tidy $(1): clean" && touch $$@
+endef
+$(foreach u,$(LINT_UNITS),$(eval $(call lint_rule,$(u))))
+CPPCHECK := cppcheck --std=c99 --enable=warning,style,performance,portability --inline-suppr \
+            --suppressions-list=.cppcheck-suppressions --error-exitcode=1 -q
+$(B)/lint/cppcheck.stamp: $(LINT_LIB) $(LINT_HOST) $(LINT_CM) .cppcheck-suppressions $(LIB_DEPS) $(wildcard examples/*.h ref/*.h)
+	@mkdir -p $(@D)
+	$(CPPCHECK) -j2 -Ilib/include -Iport/host $(LINT_LIB)
+	$(CPPCHECK) -D_GNU_SOURCE $(LINT_LC) -Ilib/include -Iport/host -Iref $(LINT_HOST)
+	$(CPPCHECK) -Ilib/include -Iport/cortex-m $(LINT_CM)
+	@echo "cppcheck: clean" && touch $@
+lint: $(B)/lint/cppcheck.stamp $(foreach u,$(LINT_UNITS),$(call lint_stamp,$(u)))
+	@echo "lint: cppcheck and clang-tidy clean ($(words $(LINT_UNITS)) clang-tidy units)"
+
 # ---- dependencies --------------------------------------------------------------
 DEB_PKGS := gcc clang libclang-rt-14-dev make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
-            qemu-system-arm
+            qemu-system-arm cppcheck clang-tidy
 deps:
 	@missing=""; \
 	for p in $(DEB_PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \

@@ -19,10 +19,13 @@
  *
  * Usage: afm_demo [OUTDIR]   (default build/demo)
  */
-#define _DEFAULT_SOURCE /* M_PI, mkdir */
+/* POSIX: mkdir, popen (a feature-test macro: reserved by design) */
+#define _POSIX_C_SOURCE 200809L /* NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp) */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 
 #include "mdr.h"
@@ -37,6 +40,7 @@ static const struct substrate subs[2] = {
     {"polystyrene", 3.4e9, 0.34, 0.066},
 };
 
+static const double PI = 3.14159265358979323846;
 static const double R_TIP = 20e-9, E_TIP = 250e9, NU_TIP = 0.23, K_CANTILEVER = 0.2;
 
 /* 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 */
@@ -50,7 +54,11 @@ static FILE *open_csv(const char *outdir, const char *name, const char *header, 
                       size_t len)
 {
     FILE *f;
-    snprintf(path, len, "%s/%s", outdir, name);
+    int n = snprintf(path, len, "%s/%s", outdir, name);
+    if (n < 0 || (size_t)n >= len) {
+        fprintf(stderr, "afm_demo: output path too long: %s\n", outdir);
+        return NULL;
+    }
     f = fopen(path, "w");
     if (f == NULL) {
         perror(path);
@@ -58,6 +66,71 @@ static FILE *open_csv(const char *outdir, const char *name, const char *header, 
     }
     fprintf(f, "%s\n", header);
     return f;
+}
+
+/* Closes a CSV written with open_csv; 0, or 1 if a write failed (reported). */
+static int close_csv(FILE *f, const char *path)
+{
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        fprintf(stderr, "afm_demo: writing %s failed\n", path);
+        return 1;
+    }
+    return 0;
+}
+
+/* mkdir -p: every directory of path, existing ones accepted. 0 or -1. */
+static int make_dirs(const char *path)
+{
+    char buf[512];
+    size_t i, n = strlen(path);
+    if (n == 0 || n >= sizeof buf) {
+        return -1;
+    }
+    memcpy(buf, path, n + 1);
+    for (i = 1; i <= n; i++) {
+        if (buf[i] == '/' || buf[i] == '\0') {
+            char c = buf[i];
+            buf[i] = '\0';
+            if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+                perror(buf);
+                return -1;
+            }
+            buf[i] = c;
+        }
+    }
+    return 0;
+}
+
+/* The F-d plot of afm_fd.csv as OUTDIR/afm_fd.png, if gnuplot is there. The
+ * shell sees fixed command strings only; the paths go to gnuplot's stdin. */
+static void plot_fd(const char *outdir, const char *csv_path)
+{
+    FILE *gp;
+    if (system("command -v gnuplot >/dev/null 2>&1") != 0) { /* NOLINT(cert-env33-c): fixed string */
+        printf("plot: install gnuplot for a PNG\n");
+        return;
+    }
+    gp = popen("gnuplot 2>/dev/null", "w"); /* NOLINT(cert-env33-c): fixed string */
+    if (gp == NULL) {
+        printf("plot: cannot start gnuplot; CSV written\n");
+        return;
+    }
+    fprintf(gp,
+            "set terminal pngcairo size 800,560 noenhanced\n"
+            "set output '%s/afm_fd.png'\n"
+            "set datafile separator ','\nset key bottom right\nset grid\n"
+            "set xlabel 'd / (pi^2 w^2 R / E*^2)^(1/3)'\nset ylabel 'F / (pi w R)'\n"
+            "set title 'Si3N4 tip R = 20 nm, exact sphere (libmdr f32)'\n"
+            "plot '%s' using (strcol(1) eq 'PDMS' ? $5 : 1/0):6 with lines lw 2 title 'PDMS', \\\n"
+            "  '' using (strcol(1) eq 'polystyrene' ? $5 : 1/0):6 with lines lw 2 title 'polystyrene', \\\n"
+            "  -1.5 with lines dt 2 title 'JKR -1.5'\n",
+            outdir, csv_path);
+    if (pclose(gp) == 0) {
+        printf("plot: %s/afm_fd.png\n", outdir);
+    } else {
+        printf("plot: gnuplot failed (no pngcairo terminal?); CSV written\n");
+    }
 }
 
 /* One force-spectroscopy cycle per substrate with the real-time engine. */
@@ -90,7 +163,7 @@ static int engine_cycles(const char *outdir)
             mdr_table_init_profile_f32(&t, nodes, 512, &c, 0.995f * (float)R_TIP) != MDR_OK ||
             mdr_engine_init_f32(&e, &t, E, w, 0.5f * w, (float)K_CANTILEVER) != MDR_OK) {
             fprintf(stderr, "afm_demo: engine init failed\n");
-            fclose(csv);
+            (void)fclose(csv);
             return 1;
         }
         printf("%s (trigger %.0f nN):\n", s->name, (double)trigger * 1e9);
@@ -98,7 +171,7 @@ static int engine_cycles(const char *outdir)
             mdr_status st = mdr_engine_step_z_f32(&e, z, &o);
             if (st != MDR_OK) {
                 fprintf(stderr, "afm_demo: step: %s\n", mdr_status_str(st));
-                fclose(csv);
+                (void)fclose(csv);
                 return 1;
             }
             fprintf(csv, "%s,%ld,%.9g,%.9g,%.9g,%.9g,%s\n", s->name, tick, (double)o.z, (double)o.d,
@@ -127,7 +200,9 @@ static int engine_cycles(const char *outdir)
                    (double)o.F0 * 1e9, (double)cr.F * 1e9, (double)e.last_cycle * 1e18);
         }
     }
-    fclose(csv);
+    if (close_csv(csv, path) != 0) {
+        return 1;
+    }
     printf("every tick: %s\n", path);
     return 0;
 }
@@ -140,8 +215,9 @@ int main(int argc, char **argv)
     FILE *csv;
     int i;
 
-    mkdir("build", 0777);
-    mkdir(outdir, 0777);
+    if (make_dirs(outdir) != 0) {
+        return 1;
+    }
     printf("AFM tip: Si3N4, R = %.0f nm; cantilever k_m = %.1f N/m; libmdr f32\n\n", R_TIP * 1e9,
            K_CANTILEVER);
     printf("%-12s %-7s %-11s %10s %12s %10s %12s\n", "substrate", "tip", "control", "a_c [nm]",
@@ -164,8 +240,8 @@ int main(int argc, char **argv)
             for (ctl = MDR_CONTROL_LOAD; ctl <= MDR_CONTROL_MACHINE; ctl++) {
                 mdr_critstate_f32 o;
                 mdr_status st = mdr_critical_f32(&c, ctl, (float)K_CANTILEVER, a0, &o);
-                double jkr = ctl == MDR_CONTROL_LOAD    ? -1.5 * M_PI * s->w * R_TIP
-                             : ctl == MDR_CONTROL_GRIPS ? -5.0 / 6.0 * M_PI * s->w * R_TIP
+                double jkr = ctl == MDR_CONTROL_LOAD    ? -1.5 * PI * s->w * R_TIP
+                             : ctl == MDR_CONTROL_GRIPS ? -5.0 / 6.0 * PI * s->w * R_TIP
                                                         : (double)NAN;
                 if (st != MDR_OK) {
                     fprintf(stderr, "afm_demo: %s\n", mdr_status_str(st));
@@ -190,14 +266,18 @@ int main(int argc, char **argv)
     }
     for (i = 0; i < 2; i++) {
         const struct substrate *s = &subs[i];
-        double Es = e_star(s), dn = cbrt(M_PI * M_PI * s->w * s->w * R_TIP / (Es * Es));
+        double Es = e_star(s), dn = cbrt(PI * PI * s->w * s->w * R_TIP / (Es * Es));
         float p[3] = {(float)R_TIP, 0.0f, 0.0f};
         mdr_contact_f32 c;
         float a0;
         int j;
         mdr_critstate_f32 o;
-        mdr_contact_init_f32(&c, MDR_PROFILE_SPHERE, p, (float)Es, (float)s->w);
-        mdr_default_start_f32(&c, &a0);
+        if (mdr_contact_init_f32(&c, MDR_PROFILE_SPHERE, p, (float)Es, (float)s->w) != MDR_OK ||
+            mdr_default_start_f32(&c, &a0) != MDR_OK) {
+            fprintf(stderr, "afm_demo: init failed\n");
+            (void)fclose(csv);
+            return 1;
+        }
         /* up to 2.5 a_c (fixed load), inside the sphere */
         if (mdr_critical_f32(&c, MDR_CONTROL_LOAD, 0.0f, a0, &o) == MDR_OK) {
             a0 = fminf(2.5f * o.a, 0.95f * (float)R_TIP);
@@ -207,30 +287,14 @@ int main(int argc, char **argv)
             mdr_eqstate_f32 e;
             if (mdr_eq_f32(&c, a, &e) == MDR_OK) {
                 fprintf(csv, "%s,%.9g,%.9g,%.9g,%.6g,%.6g\n", s->name, (double)e.a, (double)e.d,
-                        (double)e.F, (double)e.d / dn, (double)e.F / (M_PI * s->w * R_TIP));
+                        (double)e.F, (double)e.d / dn, (double)e.F / (PI * s->w * R_TIP));
             }
         }
     }
-    fclose(csv);
-    printf("equilibrium F-d curves (exact sphere): %s\n", path);
-    if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
-        char cmd[2048];
-        snprintf(cmd, sizeof cmd,
-                 "gnuplot -e \"set terminal pngcairo size 800,560 noenhanced; set output '%s/afm_fd.png';"
-                 " set datafile separator ','; set key bottom right; set grid;"
-                 " set xlabel 'd / (pi^2 w^2 R / E*^2)^(1/3)'; set ylabel 'F / (pi w R)';"
-                 " set title 'Si3N4 tip R = 20 nm, exact sphere (libmdr f32)';"
-                 " plot '%s' using (strcol(1) eq 'PDMS' ? \\$5 : 1/0):6 with lines lw 2 title 'PDMS',"
-                 " '' using (strcol(1) eq 'polystyrene' ? \\$5 : 1/0):6 with lines lw 2 title 'polystyrene',"
-                 " -1.5 with lines dt 2 title 'JKR -1.5'\" 2>/dev/null",
-                 outdir, path);
-        if (system(cmd) == 0) {
-            printf("plot: %s/afm_fd.png\n", outdir);
-        } else {
-            printf("plot: gnuplot failed (no pngcairo terminal?); CSV written\n");
-        }
-    } else {
-        printf("plot: install gnuplot for a PNG\n");
+    if (close_csv(csv, path) != 0) {
+        return 1;
     }
+    printf("equilibrium F-d curves (exact sphere): %s\n", path);
+    plot_fd(outdir, path);
     return engine_cycles(outdir);
 }

@@ -148,7 +148,7 @@ static long read_table(const char *file, double **r, double **f)
             n = -1;
         }
     }
-    fclose(fp);
+    (void)fclose(fp); /* read only: nothing to lose */
     free(text);
     return n;
 }
@@ -184,6 +184,8 @@ static mdr_status q31_step(cli_q31 *q, uint8_t control, double v, mdr_step_q31 *
 
 #define CLI_T float
 #define CLI_SFX(name) name##_f32
+#define CLI_NAME "f32"
+#define CLI_LIT "f"
 #define CLI_FMT "%.9g"
 #define CLI_EFMT "%.8e"
 #include "mdr_cli_t.h"
@@ -191,8 +193,12 @@ static mdr_status q31_step(cli_q31 *q, uint8_t control, double v, mdr_step_q31 *
 #undef CLI_SFX
 #undef CLI_FMT
 #undef CLI_EFMT
+#undef CLI_NAME
+#undef CLI_LIT
 #define CLI_T double
 #define CLI_SFX(name) name##_f64
+#define CLI_NAME "f64"
+#define CLI_LIT ""
 #define CLI_FMT "%.17g"
 #define CLI_EFMT "%.16e"
 #include "mdr_cli_t.h"
@@ -228,7 +234,7 @@ int main(int argc, char **argv)
     const char *profile = NULL;
     const char *names[32];
     double vals[32];
-    int nflag = 0, i, k, pi = -1, rc;
+    int nflag = 0, i, k, rc;
     int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_n = 0, have_steps = 0;
     int used[32] = {0};
 
@@ -336,6 +342,7 @@ int main(int argc, char **argv)
         }
         A.kind = KIND_TABLE;
     } else {
+        int pi = -1;
         for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
             if (strcmp(profiles[k].name, profile) == 0) {
                 pi = k;
@@ -472,5 +479,10 @@ int main(int argc, char **argv)
     free(A.path);
     free(A.tr);
     free(A.tf);
+    /* the results are on stdout: a write error (a full disk) fails the run */
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        perror("mdr: stdout");
+        return 1;
+    }
     return rc;
 }

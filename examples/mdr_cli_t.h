@@ -111,14 +111,16 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
 {
     CLI_SFX(mdr_table) tab;
     CLI_SFX(mdr_node) *nodes = NULL;
-    const char *sfx = sizeof(CLI_T) == sizeof(float) ? "f32" : "f64";
-    const char *lit = sizeof(CLI_T) == sizeof(float) ? "f" : "";
+    const char *sfx = CLI_NAME, *lit = CLI_LIT;
     int rc = CLI_SFX(make_table)(A, &tab, &nodes);
     unsigned i;
     if (rc == 0 && A->q31) {
         mdr_table_q31 tq;
         mdr_node_q31 *qn = malloc(MDR_TABLE_NODES(tab.n) * sizeof *qn);
-        mdr_status st = qn == NULL ? MDR_E_SIZE : CLI_SFX(mdr_table_q31_from)(&tq, qn, &tab);
+        mdr_status st = MDR_E_SIZE;
+        if (qn != NULL) {
+            st = CLI_SFX(mdr_table_q31_from)(&tq, qn, &tab);
+        }
         if (st != MDR_OK) {
             free(qn);
             free(nodes);
@@ -180,7 +182,10 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     Q.nodes = NULL;
     if (A->q31) {
         Q.nodes = malloc(MDR_TABLE_NODES(tab.n) * sizeof *Q.nodes);
-        st = Q.nodes == NULL ? MDR_E_SIZE : CLI_SFX(mdr_table_q31_from)(&Q.t, Q.nodes, &tab);
+        st = MDR_E_SIZE;
+        if (Q.nodes != NULL) {
+            st = CLI_SFX(mdr_table_q31_from)(&Q.t, Q.nodes, &tab);
+        }
         if (st != MDR_OK) {
             free(Q.nodes);
             free(nodes);
@@ -293,7 +298,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             ", \"springs\": %u, \"a_max\": " CLI_FMT ", \"arith\": \"%s\", \"event_list\": [%s]}\n",
             events, dissipated, (unsigned long)(A->q31 ? Q.e.cycles : eng.cycles), jumps,
             (unsigned)tab.n, (double)(tab.h * (CLI_T)tab.n),
-            A->q31 ? "q31" : sizeof(CLI_T) == sizeof(float) ? "f32" : "f64", list ? list : "");
+            A->q31 ? "q31" : CLI_NAME, list ? list : "");
     free(list);
     free(Q.nodes);
     free(nodes);

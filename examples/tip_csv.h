@@ -15,8 +15,9 @@
 #ifndef TIP_CSV_H
 #define TIP_CSV_H
 
+#include <ctype.h>
 #include <stddef.h>
-#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define TIP_CSV_LINE_MAX 256
@@ -31,6 +32,31 @@ static inline size_t tip_csv_lines(const char *text, size_t len)
     return n;
 }
 
+/* One "r , f" line (NUL-terminated) into *r, *f: 1, or 0 if it does not
+ * parse. strtod, not sscanf: out-of-range numbers are defined (+-inf, 0). */
+static inline int tip_csv_pair(const char *line, double *r, double *f)
+{
+    char *end;
+    const char *p = line;
+    *r = strtod(p, &end);
+    if (end == p) {
+        return 0;
+    }
+    for (p = end; isspace((unsigned char)*p); p++) {
+    }
+    if (*p != ',') {
+        return 0;
+    }
+    p++;
+    *f = strtod(p, &end);
+    if (end == p) {
+        return 0;
+    }
+    for (p = end; isspace((unsigned char)*p); p++) {
+    }
+    return *p == '\0';
+}
+
 /* Parse len bytes of text (no NUL terminator needed) into r[], f[] of
  * capacity cap. Returns the number of pairs, -1 when the text is malformed,
  * -2 when it holds more than cap pairs. */
@@ -39,7 +65,7 @@ static inline long tip_csv_parse(const char *text, size_t len, double *r, double
     size_t pos = 0, n = 0;
     int header_ok = 1;
     while (pos < len) {
-        char line[TIP_CSV_LINE_MAX], tail[2];
+        char line[TIP_CSV_LINE_MAX];
         const char *nl = memchr(text + pos, '\n', len - pos);
         size_t l = (nl != NULL ? (size_t)(nl - text) : len) - pos;
         double a, b;
@@ -55,7 +81,7 @@ static inline long tip_csv_parse(const char *text, size_t len, double *r, double
         if (l == 0 || line[0] == '#') {
             continue;
         }
-        if (sscanf(line, " %lf , %lf %1s", &a, &b, tail) != 2) {
+        if (!tip_csv_pair(line, &a, &b)) {
             if (header_ok && strchr(line, 'r') != NULL) {
                 header_ok = 0;
                 continue;

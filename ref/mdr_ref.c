@@ -454,7 +454,7 @@ int ref_critical(const ref_scene *s, int control, double k_m, double a_start, re
             }
         }
         {
-            double cstar, ap = a, an = a, rel = 0.005;
+            double cstar, ap = a, an, rel = 0.005;
             int found = 0;
             c.target = 0.0;
             cstar = c_value(a, &c);

@@ -157,7 +157,10 @@ int main(int argc, char **argv)
                        ref_g(s, a), ref_dg(s, a));
             }
         }
-        fflush(stdout);
+        if (fflush(stdout) != 0) {
+            perror("mdr_refgen");
+            return 1;
+        }
     }
     return 0;
 }

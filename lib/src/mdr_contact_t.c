@@ -675,7 +675,6 @@ static MDR_T MDR_SFX(mdr_c_length)(const MDR_SFX(mdr_contact) *c)
 static mdr_status MDR_SFX(mdr_c_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_start)
 {
     MDR_T lo, hi, ax, g, dg, hb;
-    int it;
     if (c->kind == MDR_PROFILE_FLATPUNCH) {
         *a_start = c->p[0];
         return MDR_OK;
@@ -697,6 +696,7 @@ static mdr_status MDR_SFX(mdr_c_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_s
     {
         bool grows = !(c->kind == MDR_PROFILE_POWERLAW && c->k[1] < MDR_K(0.5));
         MDR_T d;
+        int it;
         for (it = 0; it < 400; it++) {
             MDR_SFX(mdr_c_profile)(c, hi, &g, &dg, &hb);
             d = g - c->c_dl * MDR_SQRT(hi);

@@ -174,8 +174,11 @@ mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node
     MDR_T h;
     uint16_t i;
     mdr_status st = MDR_SFX(mdr_e_args)(tab, node, r, n);
-    if (st != MDR_OK || f == NULL) {
-        return st != MDR_OK ? st : MDR_E_NULL;
+    if (st != MDR_OK) {
+        return st;
+    }
+    if (f == NULL) {
+        return MDR_E_NULL;
     }
     if (m < MDR_TABLE_MIN_POINTS) {
         return MDR_E_TABLE;
@@ -651,6 +654,7 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T 
     b.tab = tab;
     b.al = al;
     b.ka = ka;
+    b.c = b.ih = b.b6 = MDR_K(0.0); /* set below if the edge moves */
     p.t = s.t;
     p.x = s.a;
     p.g = s.g;

@@ -69,29 +69,33 @@ bool MDR_SFX(mdr_m_isfinite)(MDR_T x)
     return ((b.u >> MDR_MANT_BITS) & MDR_EXP_MASK) != MDR_EXP_MASK;
 }
 
+/* 2^e for e in the normal exponent range [1 - bias, MDR_EXP_MAX]. Exact. */
+static MDR_T MDR_SFX(mdr_m_pow2)(int e)
+{
+    MDR_SFX(mdr_m_bits) b;
+    b.u = (MDR_UINT)(e + MDR_EXP_BIAS) << MDR_MANT_BITS;
+    return b.f;
+}
+
 /* x * 2^e, exact unless the result leaves the normal range (then it rounds or
  * saturates like repeated multiplication). Any int e. */
 MDR_T MDR_SFX(mdr_m_ldexp)(MDR_T x, int e)
 {
-    MDR_SFX(mdr_m_bits) b;
     while (e > MDR_EXP_MAX) {
-        b.u = (MDR_UINT)(2 * MDR_EXP_MAX) << MDR_MANT_BITS; /* 2^MDR_EXP_MAX */
-        x *= b.f;
+        x *= MDR_SFX(mdr_m_pow2)(MDR_EXP_MAX);
         e -= MDR_EXP_MAX;
         if (!MDR_SFX(mdr_m_isfinite)(x)) {
             return x;
         }
     }
     while (e < 1 - MDR_EXP_BIAS) {
-        b.u = (MDR_UINT)1 << MDR_MANT_BITS; /* 2^(1-bias), smallest normal */
-        x *= b.f;
+        x *= MDR_SFX(mdr_m_pow2)(1 - MDR_EXP_BIAS); /* smallest normal */
         e += MDR_EXP_BIAS - 1;
         if (x == MDR_K(0.0)) {
             return x;
         }
     }
-    b.u = (MDR_UINT)(e + MDR_EXP_BIAS) << MDR_MANT_BITS;
-    return x * b.f;
+    return x * MDR_SFX(mdr_m_pow2)(e);
 }
 
 /* x = m * 2^e with m in [1, 2) for finite x > 0 (subnormals included).

@@ -484,7 +484,7 @@ static MDR_STEP_FN mdr_status mdr_q_step(mdr_engine_q31 *e, uint8_t ctl, int32_t
          * equals uf but for rounding is not taken for the landing (it folds
          * again there without end: a q31 load step on the wavy profile hit
          * the jump cap, fuzz_step; mdr_e_Utol in the float engine) */
-        r = mdr_q_scan(&b, dir, uf + dir * MDR_Q_UTOL, false, &pf, &pl);
+        r = mdr_q_scan(&b, dir, uf + (int64_t)dir * MDR_Q_UTOL, false, &pf, &pl);
         if (r == MDR_Q_SCAN_NOCONV) {
             return mdr_q_refuse(e, MDR_FLAG_NOCONV, MDR_E_NOCONV);
         }

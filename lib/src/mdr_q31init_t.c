@@ -135,7 +135,7 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
 {
     const MDR_T Q29 = MDR_K(536870912.0), Q30 = MDR_K(1073741824.0);
     mdr_engine_q31 z;
-    MDR_T L, cw, ca, M, D0, kap, sc;
+    MDR_T L, cw, ca, M, D0;
     uint8_t k = 0;
     mdr_status st;
     if (e == NULL || tab == NULL || tab->node == NULL) {
@@ -195,7 +195,7 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
     z.z_in = MDR_Q30_ONE;
     z.z_k = 0;
     if (z.machine) {
-        kap = MDR_K(2.0) * E * L / k_m;
+        MDR_T kap = MDR_K(2.0) * E * L / k_m, sc;
         if (!MDR_SFX(mdr_m_isfinite)(kap) || kap > MDR_K(65536.0)) {
             return MDR_E_CONTROL;
         }
@@ -211,7 +211,7 @@ mdr_status MDR_SFX(mdr_engine_init_q31)(mdr_engine_q31 *e, const mdr_table_q31 *
         z.z_in = MDR_SFX(mdr_q_round)(Q30 * (sc / (MDR_K(1.0) + kap)));
         z.z_k = MDR_SFX(mdr_q_round)(Q30 * (kap / sc));
     }
-    z.Z0 = z.D0 * (float)(1ul << z.sz);
+    z.Z0 = z.D0 * (float)(1UL << z.sz);
     z.a = z.t = z.g = z.Ga = z.d = z.F = 0;
     z.k = 0;
     z.contact = z.touched = z.flags = 0;

@@ -25,8 +25,8 @@ void mdr_sh_write0(const char *s)
 void mdr_sh_exit(int status)
 {
     uintptr_t block[2];
-    fflush(stdout);
-    fflush(stderr);
+    (void)fflush(stdout); /* exiting: nothing to do about a failure */
+    (void)fflush(stderr);
     block[0] = 0x20026u; /* ADP_Stopped_ApplicationExit */
     block[1] = (uintptr_t)(uint32_t)status;
     (void)mdr_sh_call(0x20u, (uintptr_t)block);

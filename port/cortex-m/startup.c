@@ -7,11 +7,12 @@
  * (mdr_sh_exit). A fault prints its name and exits with status 3, so a
  * crashing test fails instead of hanging.
  */
+#include <stddef.h>
 #include <stdint.h>
 
 #include "semihost.h"
 
-extern uint32_t _sidata[], _sdata[], _edata[], _sbss[], _ebss[], _estack[];
+extern uint32_t mdr_ld_sidata[], mdr_ld_sdata[], mdr_ld_edata[], mdr_ld_sbss[], mdr_ld_ebss[], mdr_ld_estack[];
 extern void initialise_monitor_handles(void);
 extern int main(void);
 
@@ -20,12 +21,14 @@ void mdr_fault_handler(void);
 
 void Reset_Handler(void)
 {
-    uint32_t *s = _sidata, *d = _sdata;
-    while (d < _edata) {
-        *d++ = *s++;
+    /* word counts from addresses: the symbols are distinct objects to C */
+    size_t i, nd = ((uintptr_t)mdr_ld_edata - (uintptr_t)mdr_ld_sdata) / sizeof(uint32_t);
+    size_t nb = ((uintptr_t)mdr_ld_ebss - (uintptr_t)mdr_ld_sbss) / sizeof(uint32_t);
+    for (i = 0; i < nd; i++) {
+        mdr_ld_sdata[i] = mdr_ld_sidata[i];
     }
-    for (d = _sbss; d < _ebss; d++) {
-        *d = 0;
+    for (i = 0; i < nb; i++) {
+        mdr_ld_sbss[i] = 0;
     }
 #if defined(__ARM_FP)
     /* CPACR: full access to CP10 and CP11 (the FPU) before any float code */
@@ -46,7 +49,9 @@ typedef void (*mdr_vector)(void);
 
 /* initial stack pointer, reset, then NMI .. SysTick (15 entries) */
 __attribute__((section(".isr_vector"), used)) static const mdr_vector mdr_vectors[16] = {
-    (mdr_vector)(uintptr_t)_estack, Reset_Handler, mdr_fault_handler, mdr_fault_handler,
+    /* the initial stack pointer is an address, not a function */
+    (mdr_vector)(uintptr_t)mdr_ld_estack, /* NOLINT(performance-no-int-to-ptr) */
+    Reset_Handler, mdr_fault_handler, mdr_fault_handler,
     mdr_fault_handler, mdr_fault_handler, mdr_fault_handler, 0, 0, 0, 0,
     mdr_fault_handler, mdr_fault_handler, 0, mdr_fault_handler, mdr_fault_handler,
 };
