@@ -217,7 +217,11 @@ bench: $(B)/host/bench_engine $(B)/host/bench_matrix $(B)/tgt-m4/bench_target.el
 	./$(B)/host/bench_matrix time --host-instr $(B)/bench/host_instr.csv --m4 $(B)/bench/m4.csv \
 	  --csv $(BENCH_OUT)/bench.csv --md $(BENCH_OUT)/bench.md --plot $(B)/bench/plot.dat
 	gnuplot -e "datafile='$(B)/bench/plot.dat'; outfile='$(BENCH_OUT)/bench.png'" host_tests/bench_plot.gp
-	@echo "bench: $(BENCH_OUT)/bench.csv, bench.md, bench.png written"
+	@awk 'FNR == NR { if (/^## Summary/) on = 1; if (/^## Every row/) on = 0; \
+	  if (on) { if (/^## /) { sub(/^## /, ""); $$0 = "**" $$0 "**" } t = t $$0 "\n" } next } \
+	  /<!-- bench:begin/ { print; printf "%s", t; skip = 1; next } /<!-- bench:end/ { skip = 0 } !skip' \
+	  $(BENCH_OUT)/bench.md README.md > $(B)/bench/README.md && cp $(B)/bench/README.md README.md
+	@echo "bench: $(BENCH_OUT)/bench.csv, bench.md, bench.png written; README.md's matrix updated"
 
 demo: $(B)/host/afm_demo
 	./$(B)/host/afm_demo $(B)/demo
