@@ -13,3 +13,4 @@ MDR_SIZEOF(mdr_table_f32);
 MDR_SIZEOF(mdr_engine_q31);
 MDR_SIZEOF(mdr_node_q31);
 MDR_SIZEOF(mdr_table_q31);
+MDR_SIZEOF(mdr_scene_f32);

@@ -8,6 +8,7 @@
 #include "mdr_types.h"
 #include "mdr_contact.h"
 #include "mdr_engine.h"
+#include "mdr_scene.h"
 #include "mdr_q31.h"
 
 #define MDR_VERSION_MAJOR 0

@@ -763,7 +763,7 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_e_step)(MDR_SFX(mdr_engine) *e, MDR_T 
         o.a1 = pl.x;
         o.d1 = dl;
         o.F1 = Fl;
-        o.event = from_sep && pf.x == MDR_K(0.0) ? MDR_EV_JUMP_IN : MDR_EV_JUMP;
+        o.event = from_sep && o.jumps == 1u ? MDR_EV_JUMP_IN : MDR_EV_JUMP;
         dprev = dl;
         Fprev = Fl;
         p = pl;

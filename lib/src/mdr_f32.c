@@ -9,4 +9,5 @@
 #include "mdr_math_t.c"
 #include "mdr_contact_t.c"
 #include "mdr_engine_t.c"
+#include "mdr_scene_t.c"
 #include "mdr_q31init_t.c"

@@ -512,7 +512,7 @@ static MDR_STEP_FN mdr_status mdr_q_step(mdr_engine_q31 *e, uint8_t ctl, int32_t
         o.a1 = pl.x;
         o.d1 = dl;
         o.F1 = Fl;
-        o.event = from_sep && pf.x == 0 ? MDR_EV_JUMP_IN : MDR_EV_JUMP;
+        o.event = from_sep && o.jumps == 1u ? MDR_EV_JUMP_IN : MDR_EV_JUMP;
         dprev = dl;
         Fprev = Fl;
         p = pl;

@@ -1,0 +1,113 @@
+/*
+ * mdr_scene_t.h: declarations of one arithmetic of the table-free scene
+ * engine. Included by mdr_scene.h once per arithmetic (MDR_T, MDR_SFX
+ * defined); read it with T = float and suffix _f32.
+ *
+ * A scene is a profile whose equivalent profile is a monomial,
+ * g(x) = C x^n with integer n (paraboloid n = 2, C = 1/R; cone n = 1,
+ * C = (pi/2) tan(theta); power law C r^n with integer n, C = kappa_n C),
+ * stepped like the spring engine (same state machine, events, energy,
+ * mdr_engine_t.h) with no table: in t = sqrt(a) every branch U(t) of the
+ * controlled variable is a polynomial, convex where the edge is stable, so
+ * the step is a Newton solve from where the edge was, and the fold of the
+ * retraction branch under each control is found once, at init. 0 bytes of
+ * spring storage; the instance is the whole state.
+ *
+ * Units inside the instance are normalised by powers of two chosen at init
+ * (exact scaling: no rounding, no overflow for any scene whose results fit
+ * the arithmetic): radius a_s, depth D_s = C a_s^n, force 2E* a_s D_s.
+ *
+ * Outputs (the `outputs` argument of init, MDR_OUT_* bits): the step always
+ * solves for d and F and writes out->d and out->F; MDR_OUT_RADIUS adds
+ * out->a, MDR_OUT_EVENTS adds out->z, out->event, out->jumps and the states
+ * before and after a jump (a0, d0, F0, a1, d1, F1). Fields not asked for are
+ * not written. Energy (work, dissipated energy per cycle) is kept only in a
+ * caller-owned mdr_energy_<type> given to init (NULL: not computed).
+ */
+
+/** Energy bookkeeping of a scene (optional, caller-owned). */
+typedef struct {
+    MDR_T work;       /**< int F dd along the path since init [J] */
+    MDR_T work_c;     /**< compensation term of that sum (Kahan) */
+    MDR_T work_sep;   /**< work at the last complete separation [J] */
+    MDR_T dissipated; /**< energy dissipated over completed cycles [J] */
+    MDR_T last_cycle; /**< energy dissipated in the last completed cycle [J] */
+    uint32_t cycles;  /**< completed cycles (approach, then complete separation) */
+} MDR_SFX(mdr_energy);
+
+/** A table-free scene. Caller-owned; fill it with an mdr_scene_init_*()
+ *  function only, then read it freely and change it only through the step
+ *  functions. 56 bytes in f32 on a 32-bit core. */
+typedef struct {
+    MDR_T Ds;      /**< depth unit D_s = C a_s^n [m] */
+    MDR_T Fs;      /**< force unit 2 E* a_s D_s [N] */
+    MDR_T as;      /**< radius unit a_s [m] (a power of two) */
+    MDR_T gw;      /**< dl_w(a)/D_s at a = a_s: sqrt(2 pi w a_s/E*)/D_s */
+    MDR_T ga;      /**< the same with w_adv */
+    MDR_T kap;     /**< 2E* a_s/k_m, 0 without a machine */
+    MDR_T tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine */
+    MDR_T tau;     /**< edge: sqrt(a/a_s); 0 when separated */
+    MDR_T dh;      /**< d/D_s after the last step */
+    MDR_SFX(mdr_energy) *en; /**< energy bookkeeping, or NULL */
+    uint8_t n;       /**< exponent of g = C x^n, 1..MDR_POWERLAW_N_MAX */
+    uint8_t outputs; /**< MDR_OUT_* */
+    uint8_t contact; /**< 1 in contact, 0 separated */
+    uint8_t touched; /**< 1 once the scene has been in contact */
+    uint8_t flags;   /**< sticky MDR_FLAG_* (MDR_FLAG_NOCONV) */
+} MDR_SFX(mdr_scene);
+
+/**
+ * @brief A paraboloid scene, f = r^2/(2R), g = x^2/R (seed 4.28), table-free.
+ *        Links nothing of the other profiles.
+ * @param[out] s      instance; untouched unless MDR_OK
+ * @param[in]  R      radius [m], finite > 0
+ * @param[in]  E      E* > 0 [Pa]
+ * @param[in]  w      work of adhesion on retraction, w >= 0 [J/m^2]
+ * @param[in]  w_adv  on approach, 0 <= w_adv <= w [J/m^2]
+ * @param[in]  k_m    machine stiffness [N/m], finite > 0, or 0 for none
+ * @param[in]  outputs MDR_OUT_* bits (MDR_OUT_FORCE = 0: F and d only)
+ * @param[in]  en     energy bookkeeping to keep (zeroed here), or NULL
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (R, E, w, w_adv,
+ *         outputs), MDR_E_CONTROL (k_m < 0, or 2 E* / k_m not finite),
+ *         MDR_E_OVERFLOW (the scene's units leave the arithmetic's range)
+ */
+mdr_status MDR_SFX(mdr_scene_init_paraboloid)(MDR_SFX(mdr_scene) *s, MDR_T R, MDR_T E, MDR_T w,
+                                              MDR_T w_adv, MDR_T k_m, uint8_t outputs,
+                                              MDR_SFX(mdr_energy) *en);
+
+/**
+ * @brief A scene from an initialised contact whose g is a monomial: the
+ *        paraboloid, the cone, a power law with integer n (w from the
+ *        contact). Other profiles need a spring table (mdr_engine_t.h):
+ *        MDR_E_KIND.
+ * @param[in] c  an initialised contact (mdr_contact_init_<type>())
+ * @return as mdr_scene_init_paraboloid(); MDR_E_KIND for profiles without a
+ *         table-free path
+ */
+mdr_status MDR_SFX(mdr_scene_init_contact)(MDR_SFX(mdr_scene) *s, const MDR_SFX(mdr_contact) *c,
+                                           MDR_T w_adv, MDR_T k_m, uint8_t outputs,
+                                           MDR_SFX(mdr_energy) *en);
+
+/**
+ * @brief One control tick with the indentation d [m] held (fixed grips).
+ * @param[out] out  what happened; only the fields of s->outputs are written
+ *                  (d and F always), and only on MDR_OK
+ * @return MDR_OK; MDR_E_NULL, MDR_E_NONFINITE; MDR_E_OVERFLOW (a result or
+ *         energy sum would leave the arithmetic's range: state unchanged);
+ *         MDR_E_NOCONV (not expected: bisection backs every iteration;
+ *         state unchanged, MDR_FLAG_NOCONV set)
+ *
+ * Cost: pinned edge, a few products; moving edge, a Newton solve of a
+ * polynomial in t (2-4 evaluations from where the edge was; one
+ * evaluation is about 2n + 10 flops); no sqrt, log or table access.
+ */
+mdr_status MDR_SFX(mdr_scene_step_d)(MDR_SFX(mdr_scene) *s, MDR_T d, MDR_SFX(mdr_step) *out);
+
+/** @brief One tick with the force F [N] held (fixed load); see step_d().
+ *  While separated out->F = 0 and d keeps the depth at which contact was
+ *  lost. */
+mdr_status MDR_SFX(mdr_scene_step_F)(MDR_SFX(mdr_scene) *s, MDR_T F, MDR_SFX(mdr_step) *out);
+
+/** @brief One tick with the base position z = d + F/k_m [m] held; see
+ *  step_d(). MDR_E_CONTROL when the scene has no machine (k_m = 0). */
+mdr_status MDR_SFX(mdr_scene_step_z)(MDR_SFX(mdr_scene) *s, MDR_T z, MDR_SFX(mdr_step) *out);
