@@ -119,13 +119,21 @@ static MDR_STEP_FN MDR_SFX(mdr_s_br) MDR_SFX(mdr_s_branch)(const MDR_SFX(mdr_sce
     return b;
 }
 
-/* d and F of the pinned relation with the edge at tau and the control u. */
-static MDR_STEP_FN void MDR_SFX(mdr_s_state)(const MDR_SFX(mdr_s_br) *b, MDR_T tau, MDR_T u, MDR_T *d,
-                                             MDR_T *F)
+/* G = q tau^3/(n+1) at tau, from q = tau^(2n-1). */
+static MDR_STEP_FN MDR_T MDR_SFX(mdr_s_G)(uint8_t n, MDR_T q, MDR_T tau)
 {
-    MDR_T t2 = tau * tau, G = MDR_SFX(mdr_s_q)(b->n, tau) * tau * t2 / ((MDR_T)b->n + MDR_K(1.0));
+    return q * tau * tau * tau / ((MDR_T)n + MDR_K(1.0));
+}
+
+/* d and F of the pinned relation with the edge at tau and the control u;
+ * returns q = tau^(2n-1) for the caller's branch tests. */
+static MDR_STEP_FN MDR_T MDR_SFX(mdr_s_state)(const MDR_SFX(mdr_s_br) *b, MDR_T tau, MDR_T u, MDR_T *d,
+                                              MDR_T *F)
+{
+    MDR_T q = MDR_SFX(mdr_s_q)(b->n, tau), t2 = tau * tau, G = MDR_SFX(mdr_s_G)(b->n, q, tau);
     *d = (u + b->ka * G) / (b->al + b->ka * t2);
     *F = b->al == MDR_K(0.0) ? u : t2 * *d - G;
+    return q;
 }
 
 /* ------------------------------------------------------------------- init */
@@ -293,20 +301,18 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_step)(MDR_SFX(mdr_scene) *s, int ctl
     if (wk) {
         en = *z.en;
     }
-    /* the previous state (energy) */
+    /* the previous state (energy; its force only when the energy is kept) */
     dprev = z.dh;
     Fprev = MDR_K(0.0);
     if (z.contact) {
-        MDR_T t2 = z.tau * z.tau;
-        Fprev = t2 * z.dh - MDR_SFX(mdr_s_q)(z.n, z.tau) * z.tau * t2 / ((MDR_T)z.n + MDR_K(1.0));
-        MDR_SFX(mdr_s_state)(&b, z.tau, u, &d, &F);
-        {
-            MDR_T q = MDR_SFX(mdr_s_q)(z.n, z.tau);
-            if (d > z.tau * (q - z.ga)) {
-                dir = 1;
-            } else if (d < z.tau * (q - z.gw)) {
-                dir = -1;
-            }
+        MDR_T q = MDR_SFX(mdr_s_state)(&b, z.tau, u, &d, &F);
+        if (wk) {
+            Fprev = z.tau * z.tau * z.dh - MDR_SFX(mdr_s_G)(z.n, q, z.tau);
+        }
+        if (d > z.tau * (q - z.ga)) {
+            dir = 1;
+        } else if (d < z.tau * (q - z.gw)) {
+            dir = -1;
         }
     } else if (u > MDR_K(0.0)) {
         dir = 1;
@@ -365,7 +371,7 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_step)(MDR_SFX(mdr_scene) *s, int ctl
         z.contact = 1;
     } else if (dir < 0) { /* recede on the retraction branch */
         MDR_T tf = z.tf[ctl], dU, t;
-        b = MDR_SFX(mdr_s_branch)(&z, al, ka, -1);
+        b.gam = z.gw;
         if (z.tau > tf && MDR_SFX(mdr_s_U)(&b, tf, &dU) < u) {
             if (!MDR_SFX(mdr_s_root)(&b, u, tf, z.tau, z.tau, &t)) {
                 z.flags |= MDR_FLAG_NOCONV;
