@@ -95,6 +95,68 @@ static double now_ns(void)
 BENCH(float, f32, n32, naive_F_f32)
 BENCH(double, f64, n64, naive_F_f64)
 
+/* Scenes (issue 7): the table-free paraboloid scene with force only and
+ * with every output and the energy, the spring engine on a table of the
+ * same paraboloid (N = 1024), and one closed-form evaluation F(a) at the
+ * radius of each tick, on the cycle of bench_scene.h with R = 1 um as a
+ * paraboloid. Runs interleaved, REPEAT times, best of each. */
+#define SCENE_BENCH(T, SFX, NODES)                                                                    \
+    static void scene_bench_##SFX(double ns[4])                                                       \
+    {                                                                                                 \
+        const T p[3] = {(T)1e-6, 0, 0};                                                               \
+        static T a_of[STEPS + 1];                                                                     \
+        mdr_contact_##SFX c;                                                                          \
+        mdr_table_##SFX t;                                                                            \
+        int r, k;                                                                                     \
+        long i;                                                                                       \
+        mdr_contact_init_##SFX(&c, MDR_PROFILE_PARABOLOID, p, (T)1e6, (T)0.05);                       \
+        mdr_table_init_profile_##SFX(&t, NODES, 1024, &c, (T)1.2e-6);                                 \
+        ns[0] = ns[1] = ns[2] = ns[3] = 1e300;                                                        \
+        for (r = 0; r < REPEAT; r++) {                                                                \
+            for (k = 0; k < 4; k++) {                                                                 \
+                mdr_scene_##SFX s;                                                                    \
+                mdr_energy_##SFX en;                                                                  \
+                mdr_engine_##SFX e;                                                                   \
+                mdr_eqstate_##SFX q;                                                                  \
+                mdr_step_##SFX o;                                                                     \
+                double t0, acc = 0;                                                                   \
+                int st = MDR_OK;                                                                      \
+                if (k < 2) {                                                                          \
+                    st = mdr_scene_init_paraboloid_##SFX(&s, (T)1e-6, (T)1e6, (T)0.05, (T)0.02, 0,    \
+                                                         k ? MDR_OUT_ALL : MDR_OUT_FORCE,             \
+                                                         k ? &en : NULL);                             \
+                } else if (k == 2) {                                                                  \
+                    st = mdr_engine_init_##SFX(&e, &t, (T)1e6, (T)0.05, (T)0.02, 0);                  \
+                }                                                                                     \
+                if (st != MDR_OK) {                                                                   \
+                    fprintf(stderr, "bench: scene setup failed\n");                                   \
+                    return;                                                                           \
+                }                                                                                     \
+                t0 = now_ns();                                                                        \
+                for (i = 1; i <= STEPS; i++) {                                                        \
+                    if (k < 2) {                                                                      \
+                        st = mdr_scene_step_d_##SFX(&s, in_##SFX[i], &o);                             \
+                    } else if (k == 2) {                                                              \
+                        st = mdr_engine_step_d_##SFX(&e, in_##SFX[i], &o);                            \
+                        a_of[i] = o.a;                                                                \
+                    } else {                                                                          \
+                        st = a_of[i] > 0 ? mdr_eq_##SFX(&c, a_of[i], &q) : MDR_OK;                    \
+                        o.F = q.F;                                                                    \
+                    }                                                                                 \
+                    if (st != MDR_OK) {                                                               \
+                        fprintf(stderr, "bench: scene step failed (%d)\n", st);                       \
+                        return;                                                                       \
+                    }                                                                                 \
+                    acc += (double)o.F;                                                               \
+                }                                                                                     \
+                ns[k] = fmin(ns[k], (now_ns() - t0) / STEPS);                                         \
+                sink = acc;                                                                           \
+            }                                                                                         \
+        }                                                                                             \
+    }
+SCENE_BENCH(float, f32, n32)
+SCENE_BENCH(double, f64, n64)
+
 /* the q31 engine on the same scene: table from the f64 one, constants by the
  * double init, the same path as raw Q2.29 depths (converted before timing,
  * as for f32 and f64) */
@@ -193,6 +255,22 @@ int main(void)
                    ns / f32ns[j]);
         }
         printf("  largest ratio to N = 64: %.2f (goal <= 1.2)\n", worst);
+    }
+    {
+        int k;
+        printf("scenes (paraboloid R = 1 um, the same cycle; ns/step, best of %d, interleaved)\n"
+               "  arith  scene-force  scene-all+energy  all/force  engine-N1024  engine/scene-force  "
+               "closed-form-F(a)  scene-force/closed-form\n", REPEAT);
+        for (k = 0; k < 2; k++) {
+            double ns[4];
+            if (k) {
+                scene_bench_f64(ns);
+            } else {
+                scene_bench_f32(ns);
+            }
+            printf("  %s  %11.1f  %16.1f  %9.2f  %12.1f  %18.2f  %16.1f  %23.2f\n", k ? "f64" : "f32", ns[0],
+                   ns[1], ns[1] / ns[0], ns[2], ns[2] / ns[0], ns[3], ns[0] / ns[3]);
+        }
     }
     return 0;
 }

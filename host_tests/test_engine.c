@@ -37,6 +37,11 @@
 #include <cmocka.h>
 
 #include "mdr.h"
+#include "applies.h"
+
+#if !(MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_Q31 && MDR_CFG_ENGINE && MDR_CFG_ALL_PROFILES)
+MDR_TEST_NOT_APPLICABLE("f32, f64, q31, the spring engine and every profile")
+#else
 #include "naive_sum.h"
 #include "bench_matrix.h"
 #include "test_util.h"
@@ -827,3 +832,5 @@ int main(void)
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
+
+#endif /* applies */

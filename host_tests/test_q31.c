@@ -46,6 +46,11 @@
 #include <cmocka.h>
 
 #include "mdr.h"
+#include "applies.h"
+
+#if !(MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_Q31 && MDR_CFG_ENGINE && MDR_CFG_ALL_PROFILES)
+MDR_TEST_NOT_APPLICABLE("f32, f64, q31, the spring engine and every profile")
+#else
 #include "mdr_ref.h"
 #ifndef MDR_TARGET_TEST
 #define SCENES_REF
@@ -333,3 +338,5 @@ int main(void)
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
+
+#endif /* applies */

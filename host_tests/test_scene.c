@@ -28,6 +28,11 @@
 #include <cmocka.h>
 
 #include "mdr.h"
+#include "applies.h"
+
+#if !(MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_ENGINE && MDR_CFG_SCENE && MDR_CFG_EVENTS && MDR_CFG_ALL_PROFILES)
+MDR_TEST_NOT_APPLICABLE("f32, f64, the spring engine, scenes with events, every profile")
+#else
 
 #define TOL_ENG64 1e-9
 #define TOL_32 1e-5
@@ -285,3 +290,5 @@ int main(void)
            (unsigned)sizeof(mdr_scene_f64));
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
+
+#endif /* applies */

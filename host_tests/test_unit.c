@@ -29,6 +29,11 @@
 #include <cmocka.h>
 
 #include "mdr.h"
+#include "applies.h"
+
+#if !(MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_STRESS && MDR_CFG_ALL_PROFILES)
+MDR_TEST_NOT_APPLICABLE("f32, f64, stress and every profile")
+#else
 #include "test_util.h"
 
 #define REL64 1e-12 /* expectations from closed forms, evaluated in double */
@@ -801,3 +806,5 @@ int main(void)
     };
     return cmocka_run_group_tests_name("unit", tests, NULL, NULL);
 }
+
+#endif /* applies */

@@ -35,6 +35,11 @@
 
 #include "fl.h"
 #include "mdr.h"
+#include "applies.h"
+
+#if !(MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_ALL_PROFILES)
+MDR_TEST_NOT_APPLICABLE("f32, f64 and every profile")
+#else
 
 #ifndef MDR_VECTORS_DIR
 #define MDR_VECTORS_DIR "ref/vectors"
@@ -299,3 +304,5 @@ int main(void)
     report(); /* the README's accuracy table */
     return rc;
 }
+
+#endif /* applies */

@@ -12,6 +12,9 @@
 #                 MDR_SRC_F64)
 #   MDR_SRC_COMMON  status and event names (always)
 #
+# Compile-time options (arithmetics, profiles, output groups): one place,
+# lib/include/mdr_options.h; your own mdr_config.h with -DMDR_USE_CONFIG
+# (template: lib/mdr_config.example.h).
 # Linking with --gc-sections (the sources are built with
 # -ffunction-sections -fdata-sections) drops every function a program does
 # not call. Optional defines: MDR_STEP_SECTION (section of the step path,

@@ -107,6 +107,50 @@ static volatile int32_t sink_q31;
 CYCLE(f32, float, +=)
 CYCLE(q31, int32_t, ^=)
 
+/* one cycle of a table-free scene (paraboloid R = 1 um, same path) */
+__attribute__((noinline)) static uint32_t cycle_scene(mdr_scene_f32 *s)
+{
+    mdr_step_f32 o;
+    uint32_t t0;
+    long i;
+    float acc = 0;
+    t0 = mdr_port_cycles();
+    for (i = 1; i <= STEPS; i++) {
+        if (mdr_scene_step_d_f32(s, in_f32[i], &o) != MDR_OK) {
+            return 0;
+        }
+        acc += o.F;
+    }
+    t0 = ticks_since(t0);
+    sink_f32 = acc;
+    return t0;
+}
+
+/* instructions per step of the paraboloid scene, force only and with every
+ * output and the energy (issue 7) */
+static int scene_rows(double ipt)
+{
+    mdr_scene_f32 s;
+    mdr_energy_f32 en;
+    uint32_t kf, ka;
+    if (mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.02f, 0.0f, MDR_OUT_FORCE, NULL) != MDR_OK) {
+        return 1;
+    }
+    kf = cycle_scene(&s);
+    if (mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.02f, 0.0f, MDR_OUT_ALL, &en) != MDR_OK) {
+        return 1;
+    }
+    ka = cycle_scene(&s);
+    if (kf == 0 || ka == 0) {
+        printf("bench: a scene step failed\n");
+        return 1;
+    }
+    printf("scene (paraboloid R = 1 um, table-free, f32): force only %.1f instr/step, all outputs + "
+           "energy %.1f, ratio %.2f\n",
+           (double)kf * ipt / STEPS, (double)ka * ipt / STEPS, (double)ka / (double)kf);
+    return 0;
+}
+
 #ifdef BENCH_MATRIX
 /* The benchmark matrix's rows that run on the target (bench_matrix.h:
  * engine rows in f32, f64 (soft double) and q31, closed-form rows in f32
@@ -221,6 +265,9 @@ int main(void)
     }
     printf("stack used by a step (measured, libgcc included): f32 %u bytes, q31 %u bytes\n",
            (unsigned)st32, (unsigned)st31);
+    if (scene_rows(ipt) != 0) {
+        return 1;
+    }
 #ifdef BENCH_MATRIX
     return matrix(ipt);
 #else

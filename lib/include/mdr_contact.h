@@ -10,13 +10,15 @@
 
 #include "mdr_types.h"
 
+#if MDR_CFG_F32
 #define MDR_T float
 #define MDR_SFX(name) name##_f32
 #include "mdr_contact_t.h"
 #undef MDR_T
 #undef MDR_SFX
+#endif
 
-#ifndef MDR_NO_F64
+#if MDR_CFG_F64
 #define MDR_T double
 #define MDR_SFX(name) name##_f64
 #include "mdr_contact_t.h"

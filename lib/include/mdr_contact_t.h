@@ -64,7 +64,8 @@ typedef struct {
  * @param[in]  E     effective modulus E* > 0 [Pa]
  * @param[in]  w     work of adhesion w >= 0 [J/m^2]; w = 0 is the
  *                   non-adhesive contact exactly (dl = 0)
- * @return MDR_OK, MDR_E_NULL, MDR_E_KIND, MDR_E_NONFINITE, MDR_E_PARAM
+ * @return MDR_OK, MDR_E_NULL, MDR_E_KIND, MDR_E_DISABLED (a profile removed by
+ *         MDR_CFG_PROFILE_<KIND>, mdr_options.h), MDR_E_NONFINITE, MDR_E_PARAM
  */
 mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind,
                                      const MDR_T p[3], MDR_T E, MDR_T w);
@@ -93,6 +94,7 @@ mdr_status MDR_SFX(mdr_profile_eval)(const MDR_SFX(mdr_contact) *c, MDR_T x,
 mdr_status MDR_SFX(mdr_eq)(const MDR_SFX(mdr_contact) *c, MDR_T a,
                            MDR_SFX(mdr_eqstate) *out);
 
+#if MDR_CFG_STRESS
 /**
  * @brief Stress intensity and energy release rate of any state (a, d),
  *        pinned or in equilibrium: K_I = E*(g(a) - d)/sqrt(pi a) (4.17),
@@ -127,6 +129,7 @@ mdr_status MDR_SFX(mdr_stress_at)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T 
  *         mdr_stress_at(). Same errors. */
 mdr_status MDR_SFX(mdr_stress)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T r,
                                MDR_T *sigma);
+#endif /* MDR_CFG_STRESS */
 
 /**
  * @brief Critical (pull-off) state of quasi-static retraction.

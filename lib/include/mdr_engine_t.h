@@ -84,6 +84,7 @@ typedef struct {
     uint8_t jumps; /**< jumps in this step (saturates at 255) */
 } MDR_SFX(mdr_step);
 
+#if MDR_CFG_ENGINE
 /**
  * @brief Spring table of an analytic profile: g_i, G_i from the foundation's
  *        closed forms (mdr_profile_eval()), q_i by 2-point Gauss-Legendre on
@@ -185,3 +186,4 @@ mdr_status MDR_SFX(mdr_engine_step_z)(MDR_SFX(mdr_engine) *e, MDR_T z, MDR_SFX(m
 
 /** @brief Clear the sticky flags; returns the flags that were set. */
 uint8_t MDR_SFX(mdr_engine_clear_flags)(MDR_SFX(mdr_engine) *e);
+#endif /* MDR_CFG_ENGINE */

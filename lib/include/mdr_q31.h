@@ -44,6 +44,8 @@
 
 #include "mdr_engine.h"
 
+#if MDR_CFG_Q31
+
 /** Sticky flag of the q31 engine: an input or a result saturated. */
 #define MDR_FLAG_SAT 4u
 
@@ -118,6 +120,7 @@ typedef struct {
     uint8_t jumps;
 } mdr_step_q31;
 
+#if MDR_CFG_F32
 /**
  * @brief q31 table from a float spring table (init time; uses float resp.
  *        double arithmetic). Values are rounded to nearest; t_i by an
@@ -134,12 +137,14 @@ typedef struct {
  */
 mdr_status mdr_table_q31_from_f32(mdr_table_q31 *tab, mdr_node_q31 *node,
                                   const mdr_table_f32 *src);
-#ifndef MDR_NO_F64
+#endif
+#if MDR_CFG_F64
 /** @brief As mdr_table_q31_from_f32(), from an f64 table (host). */
 mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
                                   const mdr_table_f64 *src);
 #endif
 
+#if MDR_CFG_F32
 /**
  * @brief Start a q31 engine, separated. Init-time, in float
  *        (mdr_engine_init_q31_f32, for any core) or double
@@ -159,7 +164,8 @@ mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
  */
 mdr_status mdr_engine_init_q31_f32(mdr_engine_q31 *e, const mdr_table_q31 *tab, float E, float w,
                                    float w_adv, float k_m);
-#ifndef MDR_NO_F64
+#endif
+#if MDR_CFG_F64
 mdr_status mdr_engine_init_q31_f64(mdr_engine_q31 *e, const mdr_table_q31 *tab, double E,
                                    double w, double w_adv, double k_m);
 #endif
@@ -183,6 +189,7 @@ mdr_status mdr_engine_step_z_q31(mdr_engine_q31 *e, int32_t z, mdr_step_q31 *out
 /** @brief Clear the sticky flags; returns those that were set. */
 uint8_t mdr_engine_clear_flags_q31(mdr_engine_q31 *e);
 
+#if MDR_CFG_F32
 /**
  * @brief SI value -> raw q31 value of quantity q (MDR_Q_A/D/F/Z), rounded to
  *        nearest, saturated to the int32 range (float arithmetic; a helper
@@ -194,5 +201,8 @@ int32_t mdr_q31_in(const mdr_engine_q31 *e, uint8_t q, float v);
 float mdr_q31_out(const mdr_engine_q31 *e, uint8_t q, int32_t v);
 /** @brief Raw Q15.48 energy -> J (float). */
 float mdr_q31_energy(const mdr_engine_q31 *e, int64_t v);
+
+#endif
+#endif /* MDR_CFG_Q31 */
 
 #endif /* MDR_Q31_H */

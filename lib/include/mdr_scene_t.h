@@ -56,6 +56,7 @@ typedef struct {
     uint8_t flags;   /**< sticky MDR_FLAG_* (MDR_FLAG_NOCONV) */
 } MDR_SFX(mdr_scene);
 
+#if MDR_CFG_SCENE
 /**
  * @brief A paraboloid scene, f = r^2/(2R), g = x^2/R (seed 4.28), table-free.
  *        Links nothing of the other profiles.
@@ -69,7 +70,9 @@ typedef struct {
  * @param[in]  en     energy bookkeeping to keep (zeroed here), or NULL
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (R, E, w, w_adv,
  *         outputs), MDR_E_CONTROL (k_m < 0, or 2 E* / k_m not finite),
- *         MDR_E_OVERFLOW (the scene's units leave the arithmetic's range)
+ *         MDR_E_OVERFLOW (the scene's units leave the arithmetic's range),
+ *         MDR_E_DISABLED (MDR_OUT_EVENTS or an energy struct in a build
+ *         without MDR_CFG_EVENTS; the paraboloid removed: mdr_options.h)
  */
 mdr_status MDR_SFX(mdr_scene_init_paraboloid)(MDR_SFX(mdr_scene) *s, MDR_T R, MDR_T E, MDR_T w,
                                               MDR_T w_adv, MDR_T k_m, uint8_t outputs,
@@ -111,3 +114,4 @@ mdr_status MDR_SFX(mdr_scene_step_F)(MDR_SFX(mdr_scene) *s, MDR_T F, MDR_SFX(mdr
 /** @brief One tick with the base position z = d + F/k_m [m] held; see
  *  step_d(). MDR_E_CONTROL when the scene has no machine (k_m = 0). */
 mdr_status MDR_SFX(mdr_scene_step_z)(MDR_SFX(mdr_scene) *s, MDR_T z, MDR_SFX(mdr_step) *out);
+#endif /* MDR_CFG_SCENE */

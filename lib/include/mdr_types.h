@@ -18,6 +18,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "mdr_options.h"
+
 /** Status code of every fallible call: MDR_OK or a negative named error.
  *  int8_t, not an enum, so that its size is the same on every ABI. */
 typedef int8_t mdr_status;
@@ -54,6 +56,9 @@ typedef int8_t mdr_status;
 #define MDR_E_TABLE (-12)
 /** Number of springs outside [MDR_SPRINGS_MIN, MDR_SPRINGS_MAX]. */
 #define MDR_E_SIZE (-13)
+/** The profile, output group or feature asked for was removed from this
+ *  build by a compile-time option (mdr_options.h). */
+#define MDR_E_DISABLED (-14)
 
 /** Profile kinds (uint8_t values; the meaning of p[0..2] for each). */
 #define MDR_PROFILE_PARABOLOID 1u /**< f = r^2/(2R);          p = {R}            */

@@ -32,6 +32,7 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
 {
     const MDR_T *k = c->k;
     switch (c->kind) {
+#if MDR_CFG_PROFILE_PARABOLOID
     case MDR_PROFILE_PARABOLOID: {
         MDR_T t = x / k[0];
         *g = x * t;
@@ -39,11 +40,15 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         *hbar = MDR_K(2.0) / MDR_K(3.0) * x * t;
         break;
     }
+#endif
+#if MDR_CFG_PROFILE_CONE
     case MDR_PROFILE_CONE:
         *g = k[0] * x;
         *dg = k[0];
         *hbar = MDR_K(0.5) * k[0] * x;
         break;
+#endif
+#if MDR_CFG_PROFILE_POWERLAW
     case MDR_PROFILE_POWERLAW: {
         MDR_T gv = MDR_SFX(mdr_m_powscaled)(k[0], x, k[1]);
         *g = gv;
@@ -51,6 +56,8 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         *hbar = k[1] / (k[1] + MDR_K(1.0)) * gv;
         break;
     }
+#endif
+#if MDR_CFG_PROFILE_SPHERE
     case MDR_PROFILE_SPHERE: {
         /* 1 - t from R - x (exact for x >= R/2): accurate as a -> R */
         MDR_T t = x / k[0], omt = (k[0] - x) / k[0];
@@ -60,6 +67,8 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         *hbar = MDR_K(0.5) * k[0] * (t * at + am / t);
         break;
     }
+#endif
+#if MDR_CFG_PROFILE_FLATTIP
     case MDR_PROFILE_FLATTIP: {
         MDR_T b = k[1];
         if (x <= b) {
@@ -74,6 +83,8 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         }
         break;
     }
+#endif
+#if MDR_CFG_PROFILE_WAVY
     case MDR_PROFILE_WAVY: {
         MDR_T h0, h1, h0p, zh, z;
         MDR_T t = x / c->p[0];
@@ -84,7 +95,9 @@ static void MDR_SFX(mdr_c_profile)(const MDR_SFX(mdr_contact) *c, MDR_T x, MDR_T
         *hbar = MDR_K(2.0) / MDR_K(3.0) * x * t + k[2] * zh; /* 4.51 / (2E* a) */
         break;
     }
-    default: /* MDR_PROFILE_FLATPUNCH: g = 0 on 0 <= x <= a0 */
+#endif
+    default: /* MDR_PROFILE_FLATPUNCH: g = 0 on 0 <= x <= a0 (init admits no
+              * other kind: the cases above are those built) */
         *g = MDR_K(0.0);
         *dg = MDR_K(0.0);
         *hbar = MDR_K(0.0);
@@ -138,6 +151,9 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind, cons
     default:
         return MDR_E_KIND;
     }
+    if (!MDR_CFG_HAS_PROFILE(kind)) {
+        return MDR_E_DISABLED;
+    }
     if (!MDR_SFX(mdr_m_isfinite)(E) || !MDR_SFX(mdr_m_isfinite)(w)) {
         return MDR_E_NONFINITE;
     }
@@ -158,6 +174,7 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind, cons
     }
     t.c_dl = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w / E));
     switch (kind) {
+#if MDR_CFG_PROFILE_CONE
     case MDR_PROFILE_CONE: {
         MDR_T sv, cv;
         if (!(p[0] > MDR_K(0.0)) || !(p[0] < MDR_PI * MDR_K(0.5))) {
@@ -167,6 +184,8 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind, cons
         t.k[0] = MDR_PI * MDR_K(0.5) * (sv / cv); /* kappa_1 tan(theta), 4.55 */
         break;
     }
+#endif
+#if MDR_CFG_PROFILE_POWERLAW
     case MDR_PROFILE_POWERLAW:
         if (!(p[0] > MDR_K(0.0)) || !(p[1] > MDR_K(0.0)) || p[1] > (MDR_T)MDR_POWERLAW_N_MAX) {
             return MDR_E_PARAM;
@@ -176,6 +195,7 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind, cons
                  MDR_SFX(mdr_m_gamma_ratio_half)((p[1] + MDR_K(1.0)) * MDR_K(0.5)) * p[0];
         t.k[1] = p[1];
         break;
+#endif
     case MDR_PROFILE_FLATTIP:
         if (!(p[0] > MDR_K(0.0)) || !(p[1] >= MDR_K(0.0))) {
             return MDR_E_PARAM;
@@ -183,6 +203,7 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind, cons
         t.k[0] = p[0];
         t.k[1] = p[1];
         break;
+#if MDR_CFG_PROFILE_WAVY
     case MDR_PROFILE_WAVY:
         if (!(p[0] > MDR_K(0.0)) || !(p[1] >= MDR_K(0.0)) || !(p[2] > MDR_K(0.0))) {
             return MDR_E_PARAM;
@@ -191,6 +212,7 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind, cons
         t.k[1] = MDR_K(2.0) * MDR_PI / p[2];
         t.k[2] = MDR_PI * MDR_K(0.5) * p[1];
         break;
+#endif
     default: /* paraboloid, sphere, flat punch: one length > 0 */
         if (!(p[0] > MDR_K(0.0))) {
             return MDR_E_PARAM;
@@ -285,6 +307,7 @@ mdr_status MDR_SFX(mdr_eq)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_SFX(mdr_e
     return st;
 }
 
+#if MDR_CFG_STRESS
 mdr_status MDR_SFX(mdr_stress_intensity)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T d, MDR_T *K_I,
                                          MDR_T *G)
 {
@@ -374,8 +397,10 @@ static MDR_T MDR_SFX(mdr_c_abel)(const MDR_SFX(mdr_contact) *c, MDR_T r, MDR_T a
     switch (c->kind) {
     case MDR_PROFILE_PARABOLOID:
         return MDR_K(2.0) / c->k[0] * MDR_SQRT((a - r) * (a + r));
+#if MDR_CFG_PROFILE_CONE
     case MDR_PROFILE_CONE:
         return c->k[0] * MDR_SFX(mdr_m_log)((a + MDR_SQRT((a - r) * (a + r))) / r);
+#endif
     case MDR_PROFILE_FLATPUNCH:
         return MDR_K(0.0);
     default:
@@ -453,6 +478,7 @@ mdr_status MDR_SFX(mdr_stress)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T r, 
     }
     return MDR_SFX(mdr_stress_at)(c, a, e.d, r, sigma);
 }
+#endif /* MDR_CFG_STRESS */
 
 /* ---- critical states ---------------------------------------------------- */
 
@@ -658,7 +684,7 @@ static MDR_T MDR_SFX(mdr_c_length)(const MDR_SFX(mdr_contact) *c)
 {
     switch (c->kind) {
     case MDR_PROFILE_POWERLAW:
-        if (c->k[1] != MDR_K(1.0)) {
+        if (MDR_CFG_PROFILE_POWERLAW && c->k[1] != MDR_K(1.0)) {
             /* C L^n = L */
             return MDR_SFX(mdr_m_powscaled)(MDR_K(1.0), c->p[0], MDR_K(1.0) / (MDR_K(1.0) - c->k[1]));
         }
@@ -683,7 +709,7 @@ static mdr_status MDR_SFX(mdr_c_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_s
         *a_start = MDR_SFX(mdr_c_length)(c);
         return MDR_OK;
     }
-    if (c->kind == MDR_PROFILE_WAVY) {
+    if (MDR_CFG_PROFILE_WAVY && c->kind == MDR_PROFILE_WAVY) {
         /* smooth base: a^2/R = c_dl sqrt(a)  ->  a = (c_dl R)^(2/3) */
         ax = MDR_SFX(mdr_m_powscaled)(MDR_K(1.0), c->c_dl * c->p[0], MDR_K(2.0) / MDR_K(3.0));
         *a_start = MDR_K(3.0) * ax;

@@ -24,8 +24,6 @@
  * did not at least halve the residual) */
 #define MDR_ENG_ITER (2 * (MDR_MANT_BITS + 16))
 
-/* ---------------------------------------------------------------- tables */
-
 /* Kahan accumulation: *s + *cmp holds the sum to ~eps relative. */
 MDR_INLINE MDR_STEP_FN void MDR_SFX(mdr_e_kahan)(MDR_T *s, MDR_T *cmp, MDR_T v)
 {
@@ -34,6 +32,28 @@ MDR_INLINE MDR_STEP_FN void MDR_SFX(mdr_e_kahan)(MDR_T *s, MDR_T *cmp, MDR_T v)
     *cmp = (tt - *s) - y;
     *s = tt;
 }
+
+#if MDR_CFG_ENGINE || MDR_CFG_SCENE
+/* The material and machine checks of every engine init (f32, f64, q31). */
+static mdr_status MDR_SFX(mdr_e_material)(MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m)
+{
+    if (!MDR_SFX(mdr_m_isfinite)(E) || !MDR_SFX(mdr_m_isfinite)(w) ||
+        !MDR_SFX(mdr_m_isfinite)(w_adv) || !MDR_SFX(mdr_m_isfinite)(k_m)) {
+        return MDR_E_NONFINITE;
+    }
+    if (!(E > MDR_K(0.0)) || !(w >= MDR_K(0.0)) || !(w_adv >= MDR_K(0.0)) || w_adv > w) {
+        return MDR_E_PARAM;
+    }
+    if (k_m < MDR_K(0.0)) {
+        return MDR_E_CONTROL;
+    }
+    return MDR_OK;
+}
+#endif
+
+#if MDR_CFG_ENGINE /* to the end of the file */
+
+/* ---------------------------------------------------------------- tables */
 
 /* Prefix sums G_i and the square roots t_i of a table whose g_i and q_i are
  * set: G_{i+1} = G_i + h (g_i + g_{i+1})/2 + q_i, compensated; then the
@@ -243,22 +263,6 @@ mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) 
 }
 
 /* ---------------------------------------------------------------- engine */
-
-/* The material and machine checks of every engine init (f32, f64, q31). */
-static mdr_status MDR_SFX(mdr_e_material)(MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m)
-{
-    if (!MDR_SFX(mdr_m_isfinite)(E) || !MDR_SFX(mdr_m_isfinite)(w) ||
-        !MDR_SFX(mdr_m_isfinite)(w_adv) || !MDR_SFX(mdr_m_isfinite)(k_m)) {
-        return MDR_E_NONFINITE;
-    }
-    if (!(E > MDR_K(0.0)) || !(w >= MDR_K(0.0)) || !(w_adv >= MDR_K(0.0)) || w_adv > w) {
-        return MDR_E_PARAM;
-    }
-    if (k_m < MDR_K(0.0)) {
-        return MDR_E_CONTROL;
-    }
-    return MDR_OK;
-}
 
 mdr_status MDR_SFX(mdr_engine_init)(MDR_SFX(mdr_engine) *e, const MDR_SFX(mdr_table) *tab,
                                     MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m)
@@ -865,3 +869,4 @@ MDR_STEP_FN mdr_status MDR_SFX(mdr_engine_step_z)(MDR_SFX(mdr_engine) *e, MDR_T 
     }
     return MDR_SFX(mdr_e_step)(e, MDR_K(1.0), e->kappa, z, out);
 }
+#endif /* MDR_CFG_ENGINE */

@@ -28,6 +28,8 @@
 #include "mdr.h"
 #include "mdr_hooks.h"
 
+#if MDR_CFG_Q31 /* to the end of the file */
+
 #define MDR_Q_ITER 64 /* root / fold iteration cap (bisection alone needs 31) */
 #define MDR_Q_UTOL 4  /* rounding bound of mdr_q_U, LSB of Q2.29 */
 
@@ -623,3 +625,7 @@ uint8_t mdr_engine_clear_flags_q31(mdr_engine_q31 *e)
     e->flags = 0;
     return f;
 }
+#else
+/* ISO C: a translation unit declares something */
+typedef int mdr_q31_not_built;
+#endif /* MDR_CFG_Q31 */

@@ -5,6 +5,8 @@
  * The step (integer only) is lib/src/mdr_q31.c.
  */
 
+#if MDR_CFG_Q31 /* to the end of the file */
+
 /* v rounded to nearest (ties away from zero); |v| <= 2^31 - 2^8 (int32
  * conversions only: a float -> int64 conversion would call a double
  * helper on some cores) */
@@ -272,3 +274,4 @@ float mdr_q31_energy(const mdr_engine_q31 *e, int64_t v)
     return (float)(int32_t)v * scale;
 }
 #endif
+#endif /* MDR_CFG_Q31 */

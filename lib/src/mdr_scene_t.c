@@ -23,6 +23,17 @@
  * retraction is the pull-off (no landing: the profile is convex).
  */
 
+#if MDR_CFG_SCENE /* to the end of the file */
+
+/* The exponent n of g = C x^n: a build whose only scene profile is the
+ * paraboloid (mdr_options.h) knows it is 2, and its powers and quotients
+ * of n fold to constants. */
+#if MDR_CFG_PROFILE_PARABOLOID && !MDR_CFG_PROFILE_CONE && !MDR_CFG_PROFILE_POWERLAW
+#define MDR_S_N(n) ((void)(n), (uint8_t)2)
+#else
+#define MDR_S_N(n) (n)
+#endif
+
 /* A branch of the controlled variable: control constants and gamma. */
 typedef struct {
     MDR_T al, ka, gam, nu, n2; /* n2 = 2n */
@@ -34,7 +45,7 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_s_q)(uint8_t n, MDR_T tau)
 {
     MDR_T q = tau, t2 = tau * tau;
     uint8_t i;
-    for (i = 1; i < n; i++) {
+    for (i = 1; i < MDR_S_N(n); i++) {
         q *= t2;
     }
     return q;
@@ -48,61 +59,51 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_s_U)(const MDR_SFX(mdr_s_br) *b, MDR_T tau,
     return tau * (b->al * (q - b->gam) + b->ka * t2 * (b->nu * q - b->gam));
 }
 
-/* The root of U(tau) = v in (lo, hi] with U(lo) < v <= U(hi), U increasing
- * and convex there: Newton from `start`, bisection where Newton leaves the
- * bracket or does not halve the residual. false when the cap is hit. */
-static MDR_STEP_FN bool MDR_SFX(mdr_s_root)(const MDR_SFX(mdr_s_br) *b, MDR_T v, MDR_T lo, MDR_T hi,
-                                            MDR_T start, MDR_T *out)
+/* The root of U(tau) = v above lo, where U(lo) < v and U is increasing
+ * and convex from the fold on: Newton from `start`, bisection where Newton
+ * leaves the bracket (lo, hi] or does not halve the residual. hi = 0: no
+ * upper bound known yet (advancing edge): the iterate climbs by Newton
+ * steps (which pass the root where U is convex) or, below the fold,
+ * doublings, until U >= v gives one. MDR_OK; MDR_E_OVERFLOW when U stays
+ * below v in the arithmetic's range; MDR_E_NOCONV at the cap. */
+static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_root)(const MDR_SFX(mdr_s_br) *b, MDR_T v, MDR_T lo,
+                                                  MDR_T hi, MDR_T start, MDR_T *out)
 {
-    MDR_T t = start, fprev = MDR_K(0.0);
+    MDR_T t = start, fprev = MDR_MAXV;
     int it;
-    for (it = 0; it < MDR_ENG_ITER; it++) {
+    for (it = 0; it < MDR_ENG_ITER + 2 * MDR_EXP_MAX; it++) {
         MDR_T dU, f = MDR_SFX(mdr_s_U)(b, t, &dU) - v, tn;
         if (f < MDR_K(0.0)) {
             lo = t;
         } else {
             hi = t;
         }
+        tn = t - f / dU;
+        if (!(hi > MDR_K(0.0))) { /* climbing */
+            if (!(dU > MDR_K(0.0)) || !(tn > t)) { /* below the fold, or rounding */
+                tn = t > MDR_K(0.0) ? MDR_K(2.0) * t : MDR_K(1.0);
+            }
+            if (!(tn <= MDR_MAXV)) {
+                return MDR_E_OVERFLOW;
+            }
+            t = tn;
+            continue;
+        }
         if (f == MDR_K(0.0) || hi - lo <= MDR_K(4.0) * MDR_EPS * hi) {
             *out = hi;
-            return true;
+            return MDR_OK;
         }
-        tn = t - f / dU;
         if (!(dU > MDR_K(0.0)) || !(tn > lo && tn < hi) ||
-            (it > 0 && MDR_SFX(mdr_m_fabs)(f) > MDR_K(0.5) * MDR_SFX(mdr_m_fabs)(fprev))) {
+            MDR_SFX(mdr_m_fabs)(f) > MDR_K(0.5) * MDR_SFX(mdr_m_fabs)(fprev)) {
             tn = MDR_K(0.5) * (lo + hi);
         } else if (MDR_SFX(mdr_m_fabs)(tn - t) <= MDR_K(2.0) * MDR_EPS * t) {
             *out = tn;
-            return true;
+            return MDR_OK;
         }
         fprev = f;
         t = tn;
     }
-    return false;
-}
-
-/* A point above the stable root of U = v, from tau >= 0 with U(tau) < v:
- * the Newton step where U rises (past the root, by convexity), else
- * doubling. 0 if U stays below v in the arithmetic's range (the step
- * then returns MDR_E_OVERFLOW). */
-static MDR_STEP_FN MDR_T MDR_SFX(mdr_s_above)(const MDR_SFX(mdr_s_br) *b, MDR_T v, MDR_T tau)
-{
-    MDR_T dU, U = MDR_SFX(mdr_s_U)(b, tau, &dU), hi;
-    int it;
-    hi = dU > MDR_K(0.0) ? tau + (v - U) / dU : MDR_K(2.0) * tau;
-    if (!(hi > MDR_K(1.0))) {
-        hi = hi > tau ? hi : MDR_K(1.0);
-    }
-    for (it = 0; it < 2 * MDR_EXP_MAX; it++) {
-        if (!MDR_SFX(mdr_m_isfinite)(hi)) {
-            return MDR_K(0.0);
-        }
-        if (MDR_SFX(mdr_s_U)(b, hi, &dU) >= v) {
-            return hi;
-        }
-        hi *= MDR_K(2.0);
-    }
-    return MDR_K(0.0);
+    return MDR_E_NOCONV;
 }
 
 /* The branch of a control on the retraction (dir < 0) or approach side. */
@@ -113,16 +114,16 @@ static MDR_STEP_FN MDR_SFX(mdr_s_br) MDR_SFX(mdr_s_branch)(const MDR_SFX(mdr_sce
     b.al = al;
     b.ka = ka;
     b.gam = dir < 0 ? s->gw : s->ga;
-    b.n = s->n;
-    b.n2 = MDR_K(2.0) * (MDR_T)s->n;
-    b.nu = (MDR_T)s->n / ((MDR_T)s->n + MDR_K(1.0));
+    b.n = MDR_S_N(s->n);
+    b.n2 = MDR_K(2.0) * (MDR_T)b.n;
+    b.nu = (MDR_T)b.n / ((MDR_T)b.n + MDR_K(1.0));
     return b;
 }
 
 /* G = q tau^3/(n+1) at tau, from q = tau^(2n-1). */
 static MDR_STEP_FN MDR_T MDR_SFX(mdr_s_G)(uint8_t n, MDR_T q, MDR_T tau)
 {
-    return q * tau * tau * tau / ((MDR_T)n + MDR_K(1.0));
+    return q * tau * tau * tau / ((MDR_T)MDR_S_N(n) + MDR_K(1.0));
 }
 
 /* d and F of the pinned relation with the edge at tau and the control u;
@@ -138,33 +139,23 @@ static MDR_STEP_FN MDR_T MDR_SFX(mdr_s_state)(const MDR_SFX(mdr_s_br) *b, MDR_T 
 
 /* ------------------------------------------------------------------- init */
 
-/* The fold of the retraction branch (al, ka): the zero of U' in (0, inf),
- * by bisection from a bracket (U' < 0 below it, > 0 above). */
+/* The fold of the retraction branch (al, ka): the zero of U' in (0, inf)
+ * (U' < 0 below it, > 0 above), by doubling from 1 until U' > 0, then
+ * bisection to the resolution of the arithmetic. */
 static MDR_T MDR_SFX(mdr_s_fold)(const MDR_SFX(mdr_s_br) *b)
 {
-    MDR_T lo = MDR_K(0.0), hi = MDR_K(1.0), dU;
+    MDR_T lo = MDR_K(0.0), hi = MDR_K(0.0), t = MDR_K(1.0), dU;
     int it;
-    if (b->gam == MDR_K(0.0)) {
-        return MDR_K(0.0);
-    }
-    for (it = 0; it < 2 * MDR_EXP_MAX; it++) {
-        (void)MDR_SFX(mdr_s_U)(b, hi, &dU);
+    for (it = 0; it < 2 * MDR_EXP_MAX + MDR_ENG_ITER && b->gam > MDR_K(0.0); it++) {
+        (void)MDR_SFX(mdr_s_U)(b, t, &dU);
         if (dU > MDR_K(0.0)) {
-            break;
-        }
-        lo = hi;
-        hi *= MDR_K(2.0);
-    }
-    for (it = 0; it < MDR_ENG_ITER; it++) {
-        MDR_T mid = MDR_K(0.5) * (lo + hi);
-        if (!(mid > lo && mid < hi)) {
-            break;
-        }
-        (void)MDR_SFX(mdr_s_U)(b, mid, &dU);
-        if (dU > MDR_K(0.0)) {
-            hi = mid;
+            hi = t;
         } else {
-            lo = mid;
+            lo = t;
+        }
+        t = hi > MDR_K(0.0) ? MDR_K(0.5) * (lo + hi) : MDR_K(2.0) * t;
+        if (hi > MDR_K(0.0) && !(t > lo && t < hi)) {
+            break;
         }
     }
     return hi;
@@ -175,8 +166,8 @@ static mdr_status MDR_SFX(mdr_s_init)(MDR_SFX(mdr_scene) *s, MDR_T C, uint8_t n,
                                       MDR_T w_adv, MDR_T k_m, uint8_t outputs, MDR_SFX(mdr_energy) *en)
 {
     MDR_SFX(mdr_scene) z;
-    MDR_T cw, ca, ts;
-    int e, k = 0, m = 2 * (int)n - 1, i;
+    MDR_T cw, ca, ts = MDR_K(1.0);
+    int i;
     mdr_status st;
     if (s == NULL) {
         return MDR_E_NULL;
@@ -188,34 +179,42 @@ static mdr_status MDR_SFX(mdr_s_init)(MDR_SFX(mdr_scene) *s, MDR_T C, uint8_t n,
     if (outputs > MDR_OUT_ALL) {
         return MDR_E_PARAM;
     }
+    if (!MDR_CFG_EVENTS && ((outputs & MDR_OUT_EVENTS) != 0u || en != NULL)) {
+        return MDR_E_DISABLED;
+    }
     cw = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w / E));
     ca = MDR_SQRT(MDR_K(2.0) * MDR_PI * (w_adv / E));
-    /* a_s = 2^(2k) with sqrt(a_s)^(2n-1) ~ c_w/C, so that gamma_w ~ 1 */
+    /* a_s = ts^2, ts a power of two with ts^(2n-1) within a factor
+     * P = 2^(2n-1) of c_w/C, so that gamma_w ~ 1 (exact doublings) */
     if (cw > MDR_K(0.0)) {
-        MDR_T r = cw / C;
+        MDR_T r = cw / C, P = MDR_SFX(mdr_s_q)(n, MDR_K(2.0));
         if (!(r > MDR_K(0.0)) || !MDR_SFX(mdr_m_isfinite)(r)) {
             return MDR_E_OVERFLOW;
         }
-        (void)MDR_SFX(mdr_m_frexp)(r, &e);
-        k = e >= 0 ? (e + m / 2) / m : -((-e + m / 2) / m);
+        while (r > P) {
+            r /= P;
+            ts *= MDR_K(2.0);
+        }
+        while (r * P < MDR_K(1.0)) {
+            r *= P;
+            ts *= MDR_K(0.5);
+        }
     }
-    ts = MDR_SFX(mdr_m_ldexp)(MDR_K(1.0), k);
     z.as = ts * ts;
     z.Ds = C;
-    for (i = 0; i < (int)n; i++) {
+    for (i = 0; i < (int)MDR_S_N(n); i++) {
         z.Ds *= z.as;
     }
     z.Fs = MDR_K(2.0) * E * z.as * z.Ds;
     z.gw = cw * ts / z.Ds;
     z.ga = ca * ts / z.Ds;
     z.kap = k_m > MDR_K(0.0) ? MDR_K(2.0) * E * z.as / k_m : MDR_K(0.0);
-    if (!(z.as > MDR_K(0.0)) || !(z.Ds > MDR_K(0.0)) || !(z.Fs > MDR_K(0.0)) ||
-        !MDR_SFX(mdr_m_isfinite)(z.as) || !MDR_SFX(mdr_m_isfinite)(z.Ds) ||
-        !MDR_SFX(mdr_m_isfinite)(z.Fs) || !MDR_SFX(mdr_m_isfinite)(z.gw) ||
-        !MDR_SFX(mdr_m_isfinite)(z.ga)) {
+    /* finite and > 0 (gw, ga >= 0): comparisons, false for NaN */
+    if (!(z.as > MDR_K(0.0) && z.as <= MDR_MAXV) || !(z.Ds > MDR_K(0.0) && z.Ds <= MDR_MAXV) ||
+        !(z.Fs > MDR_K(0.0) && z.Fs <= MDR_MAXV) || !(z.gw <= MDR_MAXV) || !(z.ga <= MDR_MAXV)) {
         return MDR_E_OVERFLOW;
     }
-    if (!MDR_SFX(mdr_m_isfinite)(z.kap)) {
+    if (!(z.kap <= MDR_MAXV)) {
         return MDR_E_CONTROL;
     }
     z.n = n;
@@ -231,7 +230,7 @@ static mdr_status MDR_SFX(mdr_s_init)(MDR_SFX(mdr_scene) *s, MDR_T C, uint8_t n,
     z.en = en;
     z.outputs = outputs;
     z.contact = z.touched = z.flags = 0;
-    if (en != NULL) {
+    if (MDR_CFG_EVENTS && en != NULL) {
         en->work = en->work_c = en->work_sep = en->dissipated = en->last_cycle = MDR_K(0.0);
         en->cycles = 0;
     }
@@ -248,6 +247,9 @@ mdr_status MDR_SFX(mdr_scene_init_paraboloid)(MDR_SFX(mdr_scene) *s, MDR_T R, MD
     }
     if (!(R > MDR_K(0.0))) {
         return s == NULL ? MDR_E_NULL : MDR_E_PARAM;
+    }
+    if (!MDR_CFG_PROFILE_PARABOLOID) {
+        return s == NULL ? MDR_E_NULL : MDR_E_DISABLED;
     }
     return MDR_SFX(mdr_s_init)(s, MDR_K(1.0) / R, 2, E, w, w_adv, k_m, outputs, en);
 }
@@ -283,6 +285,16 @@ static MDR_STEP_FN void MDR_SFX(mdr_s_work)(MDR_SFX(mdr_energy) *en, MDR_T d0, M
     MDR_SFX(mdr_e_kahan)(&en->work, &en->work_c, MDR_K(0.5) * (F0 + F1) * (d1 - d0));
 }
 
+/* A refused step: the state is left as it was; an iteration cap is
+ * remembered in the sticky flags. */
+static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_refuse)(MDR_SFX(mdr_scene) *s, mdr_status st)
+{
+    if (st == MDR_E_NOCONV) {
+        s->flags |= MDR_FLAG_NOCONV;
+    }
+    return st;
+}
+
 /* One step with the control u (scene units) under (al, ka); ctl indexes
  * tf[] (0 load, 1 grips, 2 machine). */
 static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_step)(MDR_SFX(mdr_scene) *s, int ctl, MDR_T al, MDR_T ka,
@@ -290,11 +302,14 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_step)(MDR_SFX(mdr_scene) *s, int ctl
 {
     MDR_SFX(mdr_scene) z = *s; /* a refused step changes nothing */
     MDR_SFX(mdr_energy) en = {MDR_K(0.0), MDR_K(0.0), MDR_K(0.0), MDR_K(0.0), MDR_K(0.0), 0u};
-    const bool ev = (z.outputs & MDR_OUT_EVENTS) != 0u, wk = z.en != NULL;
+    /* constant false without MDR_CFG_EVENTS: their code is not built */
+    const bool ev = MDR_CFG_EVENTS && (z.outputs & MDR_OUT_EVENTS) != 0u;
+    const bool wk = MDR_CFG_EVENTS && z.en != NULL;
     MDR_T d = MDR_K(0.0), F = MDR_K(0.0), dprev, Fprev;
     MDR_T a0 = MDR_K(0.0), d0 = MDR_K(0.0), F0 = MDR_K(0.0), a1 = MDR_K(0.0), d1 = MDR_K(0.0), F1 = MDR_K(0.0);
     uint8_t event = MDR_EV_NONE, jumps = 0;
     int dir = 0;
+    mdr_status st;
     const bool from_sep = !z.contact;
     MDR_SFX(mdr_s_br) b = MDR_SFX(mdr_s_branch)(&z, al, ka, 1);
 
@@ -320,51 +335,41 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_step)(MDR_SFX(mdr_scene) *s, int ctl
     }
 
     if (dir > 0) { /* advance on the approach branch */
-        MDR_T dU, U0 = MDR_SFX(mdr_s_U)(&b, z.tau, &dU), hi, t;
+        MDR_T dU, U0 = MDR_SFX(mdr_s_U)(&b, z.tau, &dU), t;
         if (!(dU > MDR_K(0.0)) && b.gam > MDR_K(0.0)) {
             /* on the unstable side of the approach fold (the touch point
              * of an adhesive approach): jump at constant U0 to the stable
              * branch (jump-in) */
             MDR_T tol = MDR_K(8.0) * MDR_EPS * (MDR_SFX(mdr_m_fabs)(U0) + MDR_MINV), dl, Fl;
-            hi = MDR_SFX(mdr_s_above)(&b, U0 + tol, z.tau);
-            if (!(hi > MDR_K(0.0))) {
-                return MDR_E_OVERFLOW;
+            st = MDR_SFX(mdr_s_root)(&b, U0 + tol, z.tau, MDR_K(0.0), z.tau, &t);
+            if (st != MDR_OK) {
+                return MDR_SFX(mdr_s_refuse)(s, st);
             }
-            if (!MDR_SFX(mdr_s_root)(&b, U0 + tol, z.tau, hi, hi, &t)) {
-                z.flags |= MDR_FLAG_NOCONV;
-                s->flags = z.flags;
-                return MDR_E_NOCONV;
+            if (ev || wk) { /* the states before and after the jump */
+                if (z.contact) {
+                    MDR_SFX(mdr_s_state)(&b, z.tau, U0, &d0, &F0);
+                }
+                a0 = z.tau;
+                MDR_SFX(mdr_s_state)(&b, t, U0, &dl, &Fl);
+                if (wk) {
+                    MDR_SFX(mdr_s_work)(&en, dprev * z.Ds, Fprev * z.Fs, d0 * z.Ds, F0 * z.Fs);
+                    MDR_SFX(mdr_s_work)(&en, d0 * z.Ds, F0 * z.Fs, dl * z.Ds, Fl * z.Fs);
+                }
+                a1 = t;
+                d1 = dl;
+                F1 = Fl;
+                dprev = dl;
+                Fprev = Fl;
             }
-            if (z.contact) {
-                MDR_SFX(mdr_s_state)(&b, z.tau, U0, &d0, &F0);
-            } else {
-                d0 = F0 = MDR_K(0.0);
-            }
-            a0 = z.tau;
-            MDR_SFX(mdr_s_state)(&b, t, U0, &dl, &Fl);
-            if (wk) {
-                MDR_SFX(mdr_s_work)(&en, dprev * z.Ds, Fprev * z.Fs, d0 * z.Ds, F0 * z.Fs);
-                MDR_SFX(mdr_s_work)(&en, d0 * z.Ds, F0 * z.Fs, dl * z.Ds, Fl * z.Fs);
-            }
-            a1 = t;
-            d1 = dl;
-            F1 = Fl;
-            dprev = dl;
-            Fprev = Fl;
             event = from_sep ? MDR_EV_JUMP_IN : MDR_EV_JUMP;
             jumps = 1;
             z.tau = t;
             U0 = MDR_SFX(mdr_s_U)(&b, t, &dU);
         }
         if (U0 < u) {
-            hi = MDR_SFX(mdr_s_above)(&b, u, z.tau);
-            if (!(hi > MDR_K(0.0))) {
-                return MDR_E_OVERFLOW; /* the edge would leave the range */
-            }
-            if (!MDR_SFX(mdr_s_root)(&b, u, z.tau, hi, hi, &t)) {
-                z.flags |= MDR_FLAG_NOCONV;
-                s->flags = z.flags;
-                return MDR_E_NOCONV;
+            st = MDR_SFX(mdr_s_root)(&b, u, z.tau, MDR_K(0.0), z.tau, &t);
+            if (st != MDR_OK) {
+                return MDR_SFX(mdr_s_refuse)(s, st); /* MDR_E_OVERFLOW: the edge would leave the range */
             }
             z.tau = t;
         }
@@ -373,10 +378,9 @@ static MDR_STEP_FN mdr_status MDR_SFX(mdr_s_step)(MDR_SFX(mdr_scene) *s, int ctl
         MDR_T tf = z.tf[ctl], dU, t;
         b.gam = z.gw;
         if (z.tau > tf && MDR_SFX(mdr_s_U)(&b, tf, &dU) < u) {
-            if (!MDR_SFX(mdr_s_root)(&b, u, tf, z.tau, z.tau, &t)) {
-                z.flags |= MDR_FLAG_NOCONV;
-                s->flags = z.flags;
-                return MDR_E_NOCONV;
+            st = MDR_SFX(mdr_s_root)(&b, u, tf, z.tau, z.tau, &t);
+            if (st != MDR_OK) {
+                return MDR_SFX(mdr_s_refuse)(s, st);
             }
             z.tau = t;
         } else if (b.gam == MDR_K(0.0)) {
@@ -499,3 +503,4 @@ MDR_STEP_FN mdr_status MDR_SFX(mdr_scene_step_z)(MDR_SFX(mdr_scene) *s, MDR_T z,
     }
     return MDR_SFX(mdr_s_step)(s, 2, MDR_K(1.0), s->kap, z / s->Ds, out);
 }
+#endif /* MDR_CFG_SCENE */

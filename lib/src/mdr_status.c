@@ -19,6 +19,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_OUTSIDE: return "contact edge beyond the last spring of the table";
     case MDR_E_TABLE: return "tabulated profile unusable (order, count or g(0))";
     case MDR_E_SIZE: return "number of springs out of range";
+    case MDR_E_DISABLED: return "removed from this build (mdr_options.h)";
     default: return "unknown status";
     }
 }

@@ -1,0 +1,25 @@
+/*
+ * applies.h: which configurations a test suite applies to. A suite that
+ * needs parts of the library a configuration removes (build matrix, make
+ * matrix; options: lib/include/mdr_options.h) compiles to a main() that
+ * says so and exits 0; make matrix counts it as not applicable.
+ * Include after mdr.h.
+ */
+#ifndef MDR_APPLIES_H
+#define MDR_APPLIES_H
+
+#include <stdio.h>
+
+#define MDR_CFG_ALL_PROFILES                                                                       \
+    (MDR_CFG_PROFILE_PARABOLOID && MDR_CFG_PROFILE_CONE && MDR_CFG_PROFILE_POWERLAW &&             \
+     MDR_CFG_PROFILE_FLATPUNCH && MDR_CFG_PROFILE_SPHERE && MDR_CFG_PROFILE_FLATTIP &&             \
+     MDR_CFG_PROFILE_WAVY)
+
+#define MDR_TEST_NOT_APPLICABLE(needs)                                                             \
+    int main(void)                                                                                 \
+    {                                                                                              \
+        printf("not applicable: the suite needs %s\n", needs);                                    \
+        return 0;                                                                                  \
+    }
+
+#endif /* MDR_APPLIES_H */

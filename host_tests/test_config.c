@@ -1,0 +1,134 @@
+/*
+ * test_config.c: the test every configuration of the build matrix runs
+ * (make matrix; options: lib/include/mdr_options.h). Compiled with the
+ * configuration's options, it checks that what the configuration keeps
+ * works and that what it removes is gone: removed profiles and output
+ * groups answer MDR_E_DISABLED and leave the instance unchanged, removed
+ * functions are not declared (their checks are compiled out with them).
+ *
+ * Tolerances:
+ *   TOL_MIN = 1e-5: the smallest force along a fixed-grips cycle of a
+ *     paraboloid (4000 ticks) against JKR's -1.5 pi w R (seed 4.36): the
+ *     minimum is smooth in d, so the tick spacing (1/400 of the path's
+ *     depth scale) leaves ~1e-6; f32 rounding ~1e-6; scenes and the spring
+ *     engine (256 springs, a table exact for g quadratic in x) alike;
+ *   TOL_MIN_Q31 = 1e-5: the same for the q31 engine (Q2.29 rounding adds
+ *     ~1e-8);
+ *   the force and depth of a force-only scene equal those of an
+ *     all-outputs scene bit for bit.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "mdr.h"
+#include "test_util.h"
+
+#define TOL_MIN 1e-5
+#define TOL_MIN_Q31 1e-5
+#define NTICK 4000
+#define NSPR 256
+#define AMAX 3e-6
+
+/* the paraboloid of the cycles: R [m], E* [Pa], w [J/m^2] */
+#define TC_R 1e-6
+#define TC_E 1e6
+#define TC_W 0.05
+
+#if MDR_CFG_F32
+#define T float
+#define SFX(name) name##_f32
+#include "test_config_t.h"
+#undef T
+#undef SFX
+#endif
+#if MDR_CFG_F64
+#define T double
+#define SFX(name) name##_f64
+#include "test_config_t.h"
+#undef T
+#undef SFX
+#endif
+
+/* the configuration, as the library sees it */
+static void print_config(void)
+{
+    printf("config: f32 %d f64 %d q31 %d engine %d scene %d stress %d events %d profiles %d%d%d%d%d%d%d\n",
+           MDR_CFG_F32, MDR_CFG_F64, MDR_CFG_Q31, MDR_CFG_ENGINE, MDR_CFG_SCENE, MDR_CFG_STRESS,
+           MDR_CFG_EVENTS, MDR_CFG_PROFILE_PARABOLOID, MDR_CFG_PROFILE_CONE, MDR_CFG_PROFILE_POWERLAW,
+           MDR_CFG_PROFILE_FLATPUNCH, MDR_CFG_PROFILE_SPHERE, MDR_CFG_PROFILE_FLATTIP,
+           MDR_CFG_PROFILE_WAVY);
+}
+
+static void status_names(void **state)
+{
+    (void)state;
+    rel_le(1.0, 1.0, 0.0, 0.0, "test_util.h"); /* (used by some configurations only) */
+    assert_string_equal(mdr_status_str(MDR_E_DISABLED), "removed from this build (mdr_options.h)");
+}
+
+#if MDR_CFG_F32
+static void f32_profiles(void **state)
+{
+    (void)state;
+    profiles_f32();
+}
+#endif
+#if MDR_CFG_F64
+static void f64_profiles(void **state)
+{
+    (void)state;
+    profiles_f64();
+}
+#endif
+#if MDR_CFG_SCENE && MDR_CFG_PROFILE_PARABOLOID
+static void scenes(void **state)
+{
+    (void)state;
+#if MDR_CFG_F32
+    scene_f32();
+#endif
+#if MDR_CFG_F64
+    scene_f64();
+#endif
+}
+#endif
+#if MDR_CFG_ENGINE && MDR_CFG_PROFILE_PARABOLOID
+static void engines(void **state)
+{
+    (void)state;
+#if MDR_CFG_F32
+    engine_f32();
+#endif
+#if MDR_CFG_F64
+    engine_f64();
+#endif
+}
+#endif
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(status_names),
+#if MDR_CFG_F32
+        cmocka_unit_test(f32_profiles),
+#endif
+#if MDR_CFG_F64
+        cmocka_unit_test(f64_profiles),
+#endif
+#if MDR_CFG_SCENE && MDR_CFG_PROFILE_PARABOLOID
+        cmocka_unit_test(scenes),
+#endif
+#if MDR_CFG_ENGINE && MDR_CFG_PROFILE_PARABOLOID
+        cmocka_unit_test(engines),
+#endif
+    };
+    print_config();
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
