@@ -114,7 +114,8 @@ san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 # every configuration compiles warning-free and passes the suites that
 # apply to it (host_tests/matrix.sh). MATRIX=short (in make test, ~40 s):
 # each option off at least once, port/configs/*, the forbidden
-# combinations; MATRIX=full: all 384 combinations (~10 min).
+# combinations; MATRIX=full: all 384 combinations, library and
+# test_config each (~3 min).
 MATRIX ?= short
 matrix: $(B)/host/gen_tip.c
 	bash host_tests/matrix.sh $(MATRIX) $(B)/host/gen_tip.c
@@ -453,7 +454,7 @@ LINT_LIB := lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_st
 LINT_HOST := examples/mdr_cli.c examples/afm_demo.c ref/mdr_ref.c ref/mdr_refgen.c ref/vecdiff.c \
              ref/gen_tables.c port/link_check.c port/sizes.c
 LINT_CM := port/cortex-m/semihost.c port/cortex-m/startup.c
-LINT_LC := -DMDR_LC_F32 -DMDR_LC_STRESS -DMDR_LC_Q31
+LINT_LC := -DMDR_LC_F32 -DMDR_LC_STRESS -DMDR_LC_Q31 -DMDR_LC_SCENE -DMDR_LC_SCENE_ALL -DMDR_LC_Q31MIN
 LINT_ARM := --target=arm-none-eabi $(MDR_CM_FLAGS_m4f) -isystem /usr/lib/arm-none-eabi/include
 # clang-tidy: one stamp per configuration and file (runs under make -j2)
 LINT_CFG_host := $(MDR_REQUIRED_CFLAGS) -Ilib/include -Iport/host
