@@ -80,4 +80,43 @@ static inline mdr_status FZ_SFX(fz_step)(FZ_SFX(mdr_engine) *e, int ctl, FZ_T v,
     FZ_SFX(fz_check)(e, &before, st, out, &o0);
     return st;
 }
+
+/* One step of a table-free scene (MDR_OUT_ALL, energy kept): never
+ * MDR_E_NOCONV; a refused step changes nothing (the sticky flags aside)
+ * and writes no output; an accepted one gives finite outputs and energy,
+ * F = 0 and a = 0 when separated, and the edge inside the Hess band of the
+ * monomial g = q tau (scene units, to FZ_BAND_ULPS ulps of its terms). */
+static inline void FZ_SFX(fz_scene_step)(FZ_SFX(mdr_scene) *s, int ctl, FZ_T v)
+{
+    const FZ_SFX(mdr_scene) before = *s;
+    const FZ_SFX(mdr_energy) en0 = *s->en;
+    const double eps = sizeof(FZ_T) == sizeof(float) ? (double)FLT_EPSILON : DBL_EPSILON;
+    FZ_SFX(mdr_step) o, o0;
+    mdr_status st;
+    memset(&o, 0x5a, sizeof o);
+    o0 = o;
+    st = ctl == FZ_D ? FZ_SFX(mdr_scene_step_d)(s, v, &o)
+         : ctl == FZ_F ? FZ_SFX(mdr_scene_step_F)(s, v, &o)
+                       : FZ_SFX(mdr_scene_step_z)(s, v, &o);
+    fz_status(st);
+    FZ_CHECK(st != MDR_E_NOCONV);
+    if (st != MDR_OK) {
+        FZ_SFX(mdr_scene) x = *s;
+        x.flags = before.flags;
+        FZ_CHECK(memcmp(&x, &before, sizeof x) == 0);
+        FZ_CHECK(memcmp(s->en, &en0, sizeof en0) == 0);
+        FZ_CHECK(memcmp(&o, &o0, sizeof o) == 0);
+        return;
+    }
+    FZ_CHECK(fz_fin((double)o.z) && fz_fin((double)o.d) && fz_fin((double)o.F) && fz_fin((double)o.a));
+    FZ_CHECK(fz_fin((double)o.a0) && fz_fin((double)o.F0) && fz_fin((double)o.a1) && fz_fin((double)o.F1));
+    FZ_CHECK(fz_fin((double)s->en->work) && fz_fin((double)s->en->dissipated));
+    FZ_CHECK(s->contact ? s->tau > 0 && o.a >= 0 : s->tau == 0 && o.F == 0 && o.a == 0);
+    if (s->contact) {
+        double t = (double)s->tau, q = pow(t, 2.0 * s->n - 1.0), d = (double)s->dh;
+        double gw = t * (q - (double)s->gw), ga = t * (q - (double)s->ga);
+        double tol = FZ_BAND_ULPS * eps * (t * q + t * (double)s->gw + fabs(d)) + 16 * eps * (2.0 * s->n * t * q);
+        FZ_CHECK(d >= gw - tol && d <= ga + tol);
+    }
+}
 #undef FZ_BAND_ULPS

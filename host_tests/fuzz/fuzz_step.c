@@ -8,7 +8,9 @@
  * and for q31 past its documented +-2 input range into saturation), or with
  * the top bit of the control byte raw float bits for the float engines
  * (NaN, inf). The three engines take the same physical input; every step is
- * checked as fuzz.h describes.
+ * checked as fuzz.h describes. Where the profile is a monomial (paraboloid,
+ * cone, integer power law) the f64 and f32 table-free scenes take the same
+ * inputs (all outputs, energy kept; fz_scene_step).
  */
 #include "fuzz.h"
 
@@ -40,7 +42,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mdr_engine_f64 e64;
     mdr_engine_f32 e32;
     mdr_engine_q31 eq;
-    int ok32, okq, ops;
+    mdr_scene_f64 s64;
+    mdr_scene_f32 s32;
+    mdr_energy_f64 en64;
+    mdr_energy_f32 en32;
+    int ok32, okq, ops, oks64, oks32;
     switch (kind) {
     case MDR_PROFILE_CONE:
         p[0] = 0.01 + 1.55 * u;
@@ -79,6 +85,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                mdr_table_init_profile_f32(&t32, n32, n, &c32, (float)x_max) == MDR_OK &&
                mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, (float)w_adv, (float)k_m) == MDR_OK;
     }
+    oks64 = mdr_scene_init_contact_f64(&s64, &c64, w_adv, k_m, MDR_OUT_ALL, &en64) == MDR_OK;
+    oks32 = ok32 && mdr_scene_init_contact_f32(&s32, &c32, (float)w_adv, (float)k_m, MDR_OUT_ALL, &en32) == MDR_OK;
     okq = mdr_table_q31_from_f64(&tq, nq, &t64) == MDR_OK &&
           mdr_engine_init_q31_f64(&eq, &tq, E, w, w_adv, k_m) == MDR_OK;
 #ifdef FZ_DEBUG
@@ -116,6 +124,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             mdr_engine_clear_flags_f64(&e64);
             mdr_engine_clear_flags_f32(&e32);
             mdr_engine_clear_flags_q31(&eq);
+            s64.flags = 0;
+            s32.flags = 0;
             continue;
         }
         {
@@ -131,6 +141,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (ok32) {
             mdr_step_f32 o;
             fz_step_f32(&e32, ctl, vf, &o);
+        }
+        if (oks64) {
+            fz_scene_step_f64(&s64, ctl, v);
+        }
+        if (oks32) {
+            fz_scene_step_f32(&s32, ctl, vf);
         }
         if (okq && !(op & 0x80u)) {
             mdr_step_q31 o;
