@@ -301,12 +301,12 @@ CROSS_SPECIAL := m4f-scenecfg m4f-scenelto m0-q31min
 CFG_minscene := -DMDR_USE_CONFIG -Iport/configs/minimal-scene
 CFG_minq31 := -DMDR_USE_CONFIG -Iport/configs/minimal-q31
 LC_LINK := -Ilib/include -nostdlib -Wl,--gc-sections -Wl,-e,link_check_entry port/link_check.c
-$(B)/m4f-scenecfg/link_check.elf: $(LIB_DEPS) port/link_check.c port/configs/minimal-scene/mdr_config.h
+LTO_scenecfg :=
+LTO_scenelto := -flto
+$(B)/m4f-scenecfg/link_check.elf $(B)/m4f-scenelto/link_check.elf: $(B)/m4f-%/link_check.elf: \
+  $(LIB_DEPS) port/link_check.c port/configs/minimal-scene/mdr_config.h
 	@mkdir -p $(@D)
-	$(CORE_m4f) $(CROSS_WARN) $(CFG_minscene) -DMDR_LC_SCENE $(LC_LINK) lib/src/mdr_f32.c lib/src/mdr_status.c -lgcc -o $@
-$(B)/m4f-scenelto/link_check.elf: $(LIB_DEPS) port/link_check.c port/configs/minimal-scene/mdr_config.h
-	@mkdir -p $(@D)
-	$(CORE_m4f) $(CROSS_WARN) -flto $(CFG_minscene) -DMDR_LC_SCENE $(LC_LINK) lib/src/mdr_f32.c lib/src/mdr_status.c -lgcc -o $@
+	$(CORE_m4f) $(CROSS_WARN) $(LTO_$*) $(CFG_minscene) -DMDR_LC_SCENE $(LC_LINK) lib/src/mdr_f32.c lib/src/mdr_status.c -lgcc -o $@
 $(B)/host/min_q31.c: $(B)/host/mdr
 	./$(B)/host/mdr table --arith q31 --profile paraboloid --R 2e-3 --springs 64 --a-max 2e-4 --name min_q31 > $@
 $(B)/m0-q31min/link_check.elf: $(LIB_DEPS) port/link_check.c port/configs/minimal-q31/mdr_config.h $(B)/host/min_q31.c

@@ -41,6 +41,21 @@
 #define TC_E 1e6
 #define TC_W 0.05
 
+#if (MDR_CFG_SCENE || MDR_CFG_ENGINE) && MDR_CFG_PROFILE_PARABOLOID
+/* The smallest force along a fixed-grips cycle of the paraboloid is JKR's
+ * -1.5 pi w R (the fixed-load pull-off, passed by the grips path). */
+#define JKR_F (-1.5 * M_PI * TC_W * TC_R)
+
+/* a grips path 0 -> 4 d_c -> -2 d_c (d_c = (pi^2 w^2 R/E*^2)^(1/3), the
+ * depth scale of JKR): tick i of NTICK */
+static double grips_d(int i)
+{
+    double dc = pow(M_PI * M_PI * TC_W * TC_W * TC_R / (TC_E * TC_E), 1.0 / 3.0);
+    double u = (double)i / NTICK;
+    return u < 0.4 ? 10.0 * dc * u : 4.0 * dc - 10.0 * dc * (u - 0.4);
+}
+#endif
+
 #if MDR_CFG_F32
 #define T float
 #define SFX(name) name##_f32

@@ -35,66 +35,46 @@ static void SFX(profiles)(void)
     }
 }
 
-#if (MDR_CFG_SCENE || MDR_CFG_ENGINE) && MDR_CFG_PROFILE_PARABOLOID
-/* The smallest force along a fixed-grips cycle of a paraboloid against
- * JKR's -1.5 pi w R (the fixed-load pull-off, passed by the grips path). */
-static double SFX(jkr)(void)
-{
-    return -1.5 * M_PI * TC_W * TC_R;
-}
-
-/* a grips path 0 -> 4 d_c -> -2 d_c (d_c = (pi^2 w^2 R/E*^2)^(1/3), the
- * depth scale of JKR): tick i of n */
-static T SFX(grips_d)(int i, int n)
-{
-    double dc = pow(M_PI * M_PI * TC_W * TC_W * TC_R / (TC_E * TC_E), 1.0 / 3.0);
-    double u = (double)i / n;
-    return (T)(u < 0.4 ? 10.0 * dc * u : 4.0 * dc - 10.0 * dc * (u - 0.4));
-}
-#endif
-
 #if MDR_CFG_SCENE && MDR_CFG_PROFILE_PARABOLOID
 static void SFX(scene)(void)
 {
     SFX(mdr_scene) s, all, keep;
+    SFX(mdr_energy) en;
     SFX(mdr_step) o, oa;
-    double fmin = 0.0;
+    double Fmin = 0.0;
     int i;
-    assert_int_equal(SFX(mdr_scene_init_paraboloid)(&s, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0, MDR_OUT_FORCE, NULL),
+    assert_int_equal(SFX(mdr_scene_init_paraboloid)(&s, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0,
+                                                    MDR_OUT_FORCE, NULL),
                      MDR_OK);
     memset(&keep, 0x5a, sizeof keep);
     all = keep;
 #if MDR_CFG_EVENTS
-    {
-        SFX(mdr_energy) en;
-        assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0, MDR_OUT_ALL, &en),
-                         MDR_OK);
+    assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0,
+                                                    MDR_OUT_ALL, &en),
+                     MDR_OK);
 #else
-    {
-        SFX(mdr_energy) en;
-        /* the events group and the energy are not in this build */
-        assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0, MDR_OUT_EVENTS,
-                                                        NULL),
-                         MDR_E_DISABLED);
-        assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0, MDR_OUT_FORCE, &en),
-                         MDR_E_DISABLED);
-        assert_memory_equal(&all, &keep, sizeof all);
-        assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0, MDR_OUT_RADIUS,
-                                                        NULL),
-                         MDR_OK);
+    /* the events group and the energy are not in this build */
+    assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0,
+                                                    MDR_OUT_EVENTS, NULL),
+                     MDR_E_DISABLED);
+    assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0,
+                                                    MDR_OUT_FORCE, &en),
+                     MDR_E_DISABLED);
+    assert_memory_equal(&all, &keep, sizeof all);
+    assert_int_equal(SFX(mdr_scene_init_paraboloid)(&all, (T)TC_R, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0,
+                                                    MDR_OUT_RADIUS, NULL),
+                     MDR_OK);
 #endif
-        for (i = 0; i <= NTICK; i++) {
-            T d = SFX(grips_d)(i, NTICK);
-            assert_int_equal(SFX(mdr_scene_step_d)(&s, d, &o), MDR_OK);
-            assert_int_equal(SFX(mdr_scene_step_d)(&all, d, &oa), MDR_OK);
-            /* the outputs asked for do not change the force */
-            assert_memory_equal(&o.F, &oa.F, sizeof o.F);
-            assert_memory_equal(&o.d, &oa.d, sizeof o.d);
-            fmin = (double)o.F < fmin ? (double)o.F : fmin;
-        }
-        (void)en;
+    for (i = 0; i <= NTICK; i++) {
+        T d = (T)grips_d(i);
+        assert_int_equal(SFX(mdr_scene_step_d)(&s, d, &o), MDR_OK);
+        assert_int_equal(SFX(mdr_scene_step_d)(&all, d, &oa), MDR_OK);
+        /* the outputs asked for do not change the force */
+        assert_memory_equal(&o.F, &oa.F, sizeof o.F);
+        assert_memory_equal(&o.d, &oa.d, sizeof o.d);
+        Fmin = fmin(Fmin, (double)o.F);
     }
-    rel_le(fmin, SFX(jkr)(), 0, TOL_MIN, "scene: min F of a grips cycle vs -1.5 pi w R");
+    rel_le(Fmin, JKR_F, 0, TOL_MIN, "scene: min F of a grips cycle vs -1.5 pi w R");
 }
 #endif
 
@@ -107,32 +87,32 @@ static void SFX(engine)(void)
     SFX(mdr_table) tab;
     SFX(mdr_engine) e;
     SFX(mdr_step) o;
-    double fmin = 0.0;
+    double Fmin = 0.0;
     int i;
     assert_int_equal(SFX(mdr_contact_init)(&c, MDR_PROFILE_PARABOLOID, p, (T)TC_E, (T)TC_W), MDR_OK);
     assert_int_equal(SFX(mdr_table_init_profile)(&tab, node, NSPR, &c, (T)AMAX), MDR_OK);
     assert_int_equal(SFX(mdr_engine_init)(&e, &tab, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0), MDR_OK);
     for (i = 0; i <= NTICK; i++) {
-        assert_int_equal(SFX(mdr_engine_step_d)(&e, SFX(grips_d)(i, NTICK), &o), MDR_OK);
-        fmin = (double)o.F < fmin ? (double)o.F : fmin;
+        assert_int_equal(SFX(mdr_engine_step_d)(&e, (T)grips_d(i), &o), MDR_OK);
+        Fmin = fmin(Fmin, (double)o.F);
     }
-    rel_le(fmin, SFX(jkr)(), 0, TOL_MIN, "engine: min F of a grips cycle vs -1.5 pi w R");
+    rel_le(Fmin, JKR_F, 0, TOL_MIN, "engine: min F of a grips cycle vs -1.5 pi w R");
 #if MDR_CFG_Q31
     {
         static mdr_node_q31 qn[MDR_TABLE_NODES(NSPR)];
         mdr_table_q31 tq;
         mdr_engine_q31 eq;
         mdr_step_q31 sq;
-        fmin = 0.0;
+        Fmin = 0.0;
         assert_int_equal(SFX(mdr_table_q31_from)(&tq, qn, &tab), MDR_OK);
         assert_int_equal(SFX(mdr_engine_init_q31)(&eq, &tq, (T)TC_E, (T)TC_W, (T)TC_W, (T)0.0), MDR_OK);
         for (i = 0; i <= NTICK; i++) {
-            double d = (double)SFX(grips_d)(i, NTICK) / (double)eq.D0 * MDR_Q29_ONE;
+            /* the same (rounded) depth as the float engine, as Q2.29 of D0 */
+            double d = (double)(T)grips_d(i) / (double)eq.D0 * MDR_Q29_ONE;
             assert_int_equal(mdr_engine_step_d_q31(&eq, (int32_t)lround(d), &sq), MDR_OK);
-            fmin = (double)sq.F / MDR_Q29_ONE * (double)eq.F0 < fmin ? (double)sq.F / MDR_Q29_ONE * (double)eq.F0
-                                                                       : fmin;
+            Fmin = fmin(Fmin, (double)sq.F / MDR_Q29_ONE * (double)eq.F0);
         }
-        rel_le(fmin, SFX(jkr)(), 0, TOL_MIN_Q31, "q31: min F of a grips cycle vs -1.5 pi w R");
+        rel_le(Fmin, JKR_F, 0, TOL_MIN_Q31, "q31: min F of a grips cycle vs -1.5 pi w R");
     }
 #endif
 }

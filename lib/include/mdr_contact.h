@@ -10,21 +10,8 @@
 
 #include "mdr_types.h"
 
-#if MDR_CFG_F32
-#define MDR_T float
-#define MDR_SFX(name) name##_f32
-#include "mdr_contact_t.h"
-#undef MDR_T
-#undef MDR_SFX
-#endif
-
-#if MDR_CFG_F64
-#define MDR_T double
-#define MDR_SFX(name) name##_f64
-#include "mdr_contact_t.h"
-#undef MDR_T
-#undef MDR_SFX
-#endif
+#define MDR_TEMPLATE "mdr_contact_t.h"
+#include "mdr_each_arith.h"
 
 /** Cap on the downward scan of mdr_critical_<type>() (grid steps). */
 #define MDR_CRIT_SCAN_MAX 8192

@@ -43,20 +43,7 @@
 /** Short English name of an event code ("pull-off", ...). Never NULL. */
 const char *mdr_event_str(uint8_t event);
 
-#if MDR_CFG_F32
-#define MDR_T float
-#define MDR_SFX(name) name##_f32
-#include "mdr_engine_t.h"
-#undef MDR_T
-#undef MDR_SFX
-#endif
-
-#if MDR_CFG_F64
-#define MDR_T double
-#define MDR_SFX(name) name##_f64
-#include "mdr_engine_t.h"
-#undef MDR_T
-#undef MDR_SFX
-#endif
+#define MDR_TEMPLATE "mdr_engine_t.h"
+#include "mdr_each_arith.h"
 
 #endif /* MDR_ENGINE_H */

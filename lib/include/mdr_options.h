@@ -107,15 +107,16 @@
 #error "MDR_CFG_Q31 needs MDR_CFG_F32 or MDR_CFG_F64 (its init and table conversion)"
 #endif
 
-/** 1 if profile kind k (MDR_PROFILE_*) is built (a constant expression). */
+/** 1 if profile kind k (MDR_PROFILE_*) is built (a constant expression;
+ *  the kinds are defined in mdr_types.h, before any use expands it). */
 #define MDR_CFG_HAS_PROFILE(k)                                                           \
-    ((k) == 1u   ? MDR_CFG_PROFILE_PARABOLOID                                           \
-     : (k) == 2u ? MDR_CFG_PROFILE_CONE                                                 \
-     : (k) == 3u ? MDR_CFG_PROFILE_POWERLAW                                             \
-     : (k) == 4u ? MDR_CFG_PROFILE_FLATPUNCH                                            \
-     : (k) == 5u ? MDR_CFG_PROFILE_SPHERE                                               \
-     : (k) == 6u ? MDR_CFG_PROFILE_FLATTIP                                              \
-     : (k) == 7u ? MDR_CFG_PROFILE_WAVY                                                 \
-                 : 0)
+    ((k) == MDR_PROFILE_PARABOLOID  ? MDR_CFG_PROFILE_PARABOLOID                         \
+     : (k) == MDR_PROFILE_CONE      ? MDR_CFG_PROFILE_CONE                               \
+     : (k) == MDR_PROFILE_POWERLAW  ? MDR_CFG_PROFILE_POWERLAW                           \
+     : (k) == MDR_PROFILE_FLATPUNCH ? MDR_CFG_PROFILE_FLATPUNCH                          \
+     : (k) == MDR_PROFILE_SPHERE    ? MDR_CFG_PROFILE_SPHERE                             \
+     : (k) == MDR_PROFILE_FLATTIP   ? MDR_CFG_PROFILE_FLATTIP                            \
+     : (k) == MDR_PROFILE_WAVY      ? MDR_CFG_PROFILE_WAVY                               \
+                                    : 0)
 
 #endif /* MDR_OPTIONS_H */

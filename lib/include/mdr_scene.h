@@ -17,20 +17,7 @@
 #define MDR_OUT_EVENTS 2u /**< + out->z, event, jumps, a0/d0/F0, a1/d1/F1 */
 #define MDR_OUT_ALL 3u    /**< every field of mdr_step_<type> */
 
-#if MDR_CFG_F32
-#define MDR_T float
-#define MDR_SFX(name) name##_f32
-#include "mdr_scene_t.h"
-#undef MDR_T
-#undef MDR_SFX
-#endif
-
-#if MDR_CFG_F64
-#define MDR_T double
-#define MDR_SFX(name) name##_f64
-#include "mdr_scene_t.h"
-#undef MDR_T
-#undef MDR_SFX
-#endif
+#define MDR_TEMPLATE "mdr_scene_t.h"
+#include "mdr_each_arith.h"
 
 #endif /* MDR_SCENE_H */

@@ -15,8 +15,8 @@
  * tau > 0 (the fold; at 0 when gamma = 0); U is increasing and convex on
  * [tau_f, inf) (U'' >= 0 there), so Newton from either side converges to
  * the stable root, from the right monotonically (the bracketed,
- * bisection-backed form of mdr_e_root, Numerical Recipes 9.4, bounds the
- * iterations by MDR_ENG_ITER). The root is accepted within 4 eps of tau:
+ * bisection-backed form of mdr_e_root, Numerical Recipes 9.4; mdr_s_root
+ * bounds the iterations by MDR_ENG_ITER plus the doublings of its climb). The root is accepted within 4 eps of tau:
  * a relative error of 8 eps in a, below the rounding of the F and d it
  * gives. The fold of the retraction branch is found once at init for each
  * control. Below it U rises back to U(0) = 0, so a fold reached on
