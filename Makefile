@@ -14,7 +14,7 @@
 #   make lint       cppcheck + clang-tidy (configuration: .clang-tidy,
 #                   .cppcheck-suppressions)
 #   make fuzz       libFuzzer targets, FUZZ_TIME s each (fuzz-replay: the corpus)
-#   make tables     regenerate lib/src/mdr_tables.h (quadrature nodes)
+#   make tables     regenerate lib/src/math/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
 #
 # CC, CFLAGS and CROSS_COMPILE given on the command line are respected;
@@ -262,7 +262,7 @@ $(B)/host/gen_tables: ref/gen_tables.c
 	@mkdir -p $(@D)
 	$(HOSTCC) -O2 $< $(GSL_LIBS) -o $@
 tables: $(B)/host/gen_tables
-	./$(B)/host/gen_tables > lib/src/mdr_tables.h
+	./$(B)/host/gen_tables > lib/src/math/mdr_tables.h
 
 # ---- cross builds -------------------------------------------------------------
 # Per core (flags: port/*/port.mk) the library objects are compiled with

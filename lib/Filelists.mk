@@ -27,7 +27,8 @@ MDR_SRC_Q31 := $(MDR_ROOT)/lib/src/mdr_q31.c
 MDR_SRC_COMMON := $(MDR_ROOT)/lib/src/mdr_status.c
 MDR_SRC_ALL := $(MDR_SRC_F32) $(MDR_SRC_F64) $(MDR_SRC_Q31) $(MDR_SRC_COMMON)
 # the headers and templates the sources include (for dependency rules)
-MDR_DEPS := $(wildcard $(MDR_INC)/*.h $(MDR_ROOT)/lib/src/*.h $(MDR_ROOT)/lib/src/*_t.c)
+MDR_DEPS := $(wildcard $(MDR_INC)/*.h $(MDR_ROOT)/lib/src/*.h $(MDR_ROOT)/lib/src/*.inc \
+              $(MDR_ROOT)/lib/src/*/*.h $(MDR_ROOT)/lib/src/*/*.inc)
 # C99, no hosted library, sqrt as an instruction (no errno), one section per
 # function and object (for --gc-sections)
 MDR_REQUIRED_CFLAGS := -std=c99 -ffreestanding -fno-math-errno -ffunction-sections -fdata-sections

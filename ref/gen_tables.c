@@ -1,5 +1,5 @@
 /*
- * gen_tables.c: writes lib/src/mdr_tables.h, the constant node tables of the
+ * gen_tables.c: writes lib/src/math/mdr_tables.h, the constant node tables of the
  * library's quadratures, from GSL's Gauss-Legendre nodes and long-double
  * tanh-sinh nodes. Run by `make tables`; the output is committed.
  *

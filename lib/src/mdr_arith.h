@@ -1,7 +1,7 @@
 /*
  * mdr_arith.h: the macros that make one template source serve every floating
  * arithmetic. A translation unit defines MDR_ARITH_F32 or MDR_ARITH_F64 and
- * then includes this file and the *_t.h / *_t.c templates.
+ * then includes this file and the *_t.h / *.inc templates (mdr_float.inc).
  *
  *   MDR_T          the real type
  *   MDR_SFX(n)     n_f32 / n_f64 (public and internal names)

@@ -5,7 +5,7 @@
  *
  *   MDR_PORT_SQRT_F32(x), MDR_PORT_SQRT_F64(x)
  *                  square root (the FPU instruction); default: lib/'s own
- *                  Newton routine (lib/src/mdr_math_t.c, correctly rounded
+ *                  Newton routine (lib/src/math/mdr_math.inc, correctly rounded
  *                  to 1 ulp)
  *   MDR_INLINE     qualifiers of the small helpers of the step (default
  *                  `static inline`)

@@ -1,7 +1,7 @@
 /*
- * mdr_math_t.h: declarations of libmdr's own freestanding math (no libm), one
+ * mdr_math.h: declarations of libmdr's own freestanding math (no libm), one
  * set per arithmetic (include after mdr_arith.h). Internal: not installed.
- * Domains and error bounds are stated above each definition in mdr_math_t.c;
+ * Domains and error bounds are stated above each definition in mdr_math.inc;
  * callers validate arguments, these kernels do not return statuses.
  */
 #include <stdbool.h>
