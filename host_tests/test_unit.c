@@ -5,9 +5,12 @@
  *
  * Tolerances:
  *   math kernels vs libm (double): log, exp, sqrt 4 ulp; sincos 4e-16 abs;
- *     powscaled (|y|+4) ulp; gamma ratio 30 ulp; atanh_m 16 ulp
+ *     powscaled (|y|+4) ulp; gamma ratio 30 ulp; atanh_m 16 ulp; atan2 on the
+ *     first quadrant 5 ulp of the result (measured 4.4, f32 2.8); frexp exact
+ *     (subnormals included), ldexp exact for normal results at any exponent
+ *     and within one subnormal spacing below (it rounds twice there);
  *     float variants: the same counts in float ulp (eps = 2^-24);
- *   literature values: REL64 = 1e-12 (f64) against closed forms, REL_CV = 1e-11
+ *   literature values: REL64 = 5e-15 (f64) against closed forms, REL_CV = 1e-11
  *     against the 12-digit tables of CHECK_VALUES.md, REL32 = 2e-6 (f32), relative;
  *     depths relative to max(|d|, dl(a));
  *   round trips: K_I(a, d(a)) = sqrt(2 E* w) to 1e-12 (f64) / 2e-5 (f32:
@@ -35,12 +38,13 @@
 MDR_TEST_NOT_APPLICABLE("f32, f64, stress and every profile")
 #else
 #include "test_util.h"
+#include "closed_forms.h"
 
-#define REL64 1e-12 /* expectations from closed forms, evaluated in double */
+#define REL64 5e-15 /* expectations from closed forms, evaluated in double (measured 6.2e-16) */
 #define REL_CV 1e-11 /* expectations from CHECK_VALUES tables (12 digits: +-5e-12) */
 #define REL32 2e-6
 
-/* internal kernels (lib/src/mdr_math_t.h), tested directly */
+/* internal kernels (lib/src/math/mdr_math.h), tested directly */
 double mdr_m_log_f64(double), mdr_m_exp_f64(double), mdr_m_sqrt_f64(double);
 double mdr_m_powscaled_f64(double, double, double), mdr_m_gamma_ratio_half_f64(double);
 double mdr_m_atanh_m_f64(double);
@@ -50,6 +54,8 @@ float mdr_m_powscaled_f32(float, float, float), mdr_m_gamma_ratio_half_f32(float
 float mdr_m_atanh_m_f32(float);
 void mdr_m_sincos_f32(float, float *, float *);
 void mdr_m_struve01_f64(double, double, double *, double *, double *, double *);
+double mdr_m_atan2p_f64(double, double), mdr_m_frexp_f64(double, int *), mdr_m_ldexp_f64(double, int);
+float mdr_m_atan2p_f32(float, float), mdr_m_frexp_f32(float, int *), mdr_m_ldexp_f32(float, int);
 void mdr_m_struve01_f32(float, float, float *, float *, float *, float *);
 
 /* ---------------------------------------------------------------- math */
@@ -105,6 +111,47 @@ static void ref_struve(long double z, long double *s0, long double *s1, double *
     *e1 = 16 * UL * (double)(a1 / fabsl(*s1));
 }
 
+/* frexp (x = m 2^e, 1 <= m < 2) and ldexp (x 2^e) are exact: against libm's
+ * over the whole range, subnormals and exponents beyond one scaling step of
+ * ldexp included (frexp's m is libm's mantissa doubled) */
+static void frexp_ldexp_f64(void)
+{
+    for (double x = 4.9e-324; x < 1.7e308; x = fmax(x * 1.0731, nextafter(x, 1e308))) {
+        int e, el;
+        double m = mdr_m_frexp_f64(x, &e), ml = frexp(x, &el);
+        assert_true(m == 2 * ml && e == el - 1);
+    }
+    for (int e = -2200; e <= 2200; e += 1) {
+        double xs[3] = {1.0, 0.7853981633974483, 1.9999999999999998};
+        for (int i = 0; i < 3; i++) {
+            double want = ldexp(xs[i], e), got = mdr_m_ldexp_f64(xs[i], e);
+            assert_true(fabs(want) >= DBL_MIN ? got == want : fabs(got - want) <= 0x1p-1074);
+        }
+    }
+}
+
+static void frexp_ldexp_f32(void)
+{
+    for (double x = 1.5e-45; x < 3.4e38; x *= 1.0731) {
+        float xf = (float)x, mf = 0;
+        int e, el;
+        if (xf == 0) {
+            continue;
+        }
+        mf = mdr_m_frexp_f32(xf, &e);
+        assert_true(mf == 2 * frexpf(xf, &el) && e == el - 1);
+    }
+    for (int e = -320; e <= 320; e += 1) {
+        float xs[3] = {1.0f, 0.78539819f, 1.9999999f};
+        for (int i = 0; i < 3; i++) {
+            float want = ldexpf(xs[i], e), got = mdr_m_ldexp_f32(xs[i], e);
+            /* into the subnormal range ldexp rounds twice, as repeated
+             * products do (its contract): one subnormal spacing */
+            assert_true(fabsf(want) >= FLT_MIN ? got == want : fabsf(got - want) <= 0x1p-149f);
+        }
+    }
+}
+
 static void math_kernels_f64(void **st)
 {
     const double u = DBL_EPSILON / 2;
@@ -138,6 +185,13 @@ static void math_kernels_f64(void **st)
         double e, want = ref_atanh_m(t, &e);
         rel_le(mdr_m_atanh_m_f64(t), want, 0, 16 * u + e, "atanh - t");
     }
+    for (double y = 1e-300; y < 1e300; y *= 1.93) {
+        for (double x = 1e-300; x < 1e300; x *= 7.37) {
+            double want = atan2(y, x);
+            rel_le(mdr_m_atan2p_f64(y, x), want, nextafter(want, 2) - want, 5, "atan2 (ulp)");
+        }
+    }
+    frexp_ldexp_f64();
 }
 
 static void math_kernels_f32(void **st)
@@ -178,6 +232,17 @@ static void math_kernels_f32(void **st)
         double e, want = ref_atanh_m(tf, &e);
         rel_le(mdr_m_atanh_m_f32(tf), want, 0, 16 * u + e, "atanh - t f32");
     }
+    for (double y = 1e-37; y < 1e37; y *= 1.93) {
+        for (double x = 1e-37; x < 1e37; x *= 7.37) {
+            float yf = (float)y, xf = (float)x;
+            double want = atan2(yf, xf);
+            if (want >= FLT_MIN) { /* a subnormal result has no relative accuracy */
+                rel_le(mdr_m_atan2p_f32(yf, xf), want, nextafterf((float)want, 2) - (float)want, 5,
+                       "atan2f (ulp)");
+            }
+        }
+    }
+    frexp_ldexp_f32();
 }
 
 /* Struve at small z against the power series 4.48 in long double; the
@@ -190,12 +255,12 @@ static void struve_series(void **st)
         double h0, h1, h0p, zh, e0, e1, w;
         ref_struve(z, &s0, &s1, &e0, &e1);
         mdr_m_struve01_f64(z, 0.0, &h0, &h1, &h0p, &zh);
-        rel_le(h0, (double)s0, 0, 1e-13 + e0, "H0");
-        rel_le(h1, (double)s1, 0, 1e-13 + e1, "H1");
+        rel_le(h0, (double)s0, 0, 4e-15 + e0, "H0");
+        rel_le(h1, (double)s1, 0, 4e-15 + e1, "H1");
         w = 2 / M_PI - (double)s1;
-        rel_le(h0p, w, 0, 1e-13 + e1 * fabs((double)s1 / w), "H0'");
+        rel_le(h0p, w, 0, 4e-15 + e1 * fabs((double)s1 / w), "H0'");
         w = z * (double)s0 - (double)s1;
-        rel_le(zh, w, 0, 1e-13 + (e0 * z * fabs((double)s0) + e1 * fabs((double)s1)) / fabs(w),
+        rel_le(zh, w, 0, 4e-14 + (e0 * z * fabs((double)s0) + e1 * fabs((double)s1)) / fabs(w),
                "zH0-H1");
     }
     /* f32 at the float argument; the quadrature's error is absolute on the
@@ -206,7 +271,7 @@ static void struve_series(void **st)
         double e0, e1;
         ref_struve(zf, &s0, &s1, &e0, &e1);
         mdr_m_struve01_f32(zf, 0.0f, &f0, &f1, &f0p, &fz);
-        rel_le(f0, (double)s0, fmax(fabs((double)s0), fmin(z, 1.0)), 4e-7 + e0, "H0 f32");
+        rel_le(f0, (double)s0, fmax(fabs((double)s0), fmin(z, 1.0)), 2e-7 + e0, "H0 f32");
         rel_le(f1, (double)s1, fmax(fabs((double)s1), fmin(z * z, z) / 5), 4e-7 + e1, "H1 f32");
     }
 }
@@ -247,12 +312,17 @@ static void crit_both(uint8_t kind, double p0, double p1, double p2, double E, d
     print_message("%-28s f64 rel a %.1e F %.1e d %.1e | f32 rel a %.1e F %.1e d %.1e\n", what,
                   fabs(o64.a - a) / a, fabs(o64.F - F) / fabs(F), fabs(o64.d - d) / ds,
                   fabs(o32.a - a) / a, fabs(o32.F - F) / fabs(F), fabs(o32.d - d) / ds);
-    rel_le(o64.a, a, 0, tol64, what);
-    rel_le(o64.F, F, 0, tol64, what);
-    rel_le(o64.d, d, ds, tol64, what);
-    rel_le(o32.a, a, 0, REL32, what);
-    rel_le(o32.F, F, 0, REL32, what);
-    rel_le(o32.d, d, ds, REL32, what);
+    {
+        char w64[128], w32[128];
+        snprintf(w64, sizeof w64, "critical state (f64, tol %s) [%s]", tol64 == REL64 ? "REL64" : "REL_CV", what);
+        snprintf(w32, sizeof w32, "critical state (f32) [%s]", what);
+        rel_le(o64.a, a, 0, tol64, w64);
+        rel_le(o64.F, F, 0, tol64, w64);
+        rel_le(o64.d, d, ds, tol64, w64);
+        rel_le(o32.a, a, 0, REL32, w32);
+        rel_le(o32.F, F, 0, REL32, w32);
+        rel_le(o32.d, d, ds, REL32, w32);
+    }
 }
 
 /* ---------------------------------------------------------------- named */
@@ -456,7 +526,7 @@ static void no_adhesion_is_exact(void **st)
             assert_true(e.dl == 0.0);
             assert_true(e.d == g);
             assert_true(e.K_I == 0.0);
-            rel_le(e.F, 2 * 3.0 * (a * g - G), 2 * 3.0 * a * g + 1e-300, 1e-14, "F = F_na");
+            rel_le(e.F, 2 * 3.0 * (a * g - G), 2 * 3.0 * a * g + 1e-300, 1e-15, "F = F_na");
             assert_true(e.F >= 0.0);
         }
         /* no pull-off: the contact peels stably to a = 0; the flat punch and
@@ -487,48 +557,63 @@ static void sphere_small_radius_no_cancellation(void **st)
         assert_int_equal(mdr_eq_f32(&c, (float)a, &e), MDR_OK);
         assert_int_equal(mdr_eq_f64(&c64, a, &e64), MDR_OK);
         assert_int_equal(mdr_profile_eval_f32(&c, (float)a, &gf, NULL, NULL), MDR_OK);
-        rel_le(e.F, F, Fna + fabs(F), REL32, "sphere F at small a/R (f32)");
-        rel_le(gf, g, 0, REL32, "sphere g at small a/R (f32)");
+        rel_le(e.F, F, Fna + fabs(F), 5e-7, "sphere F at small a/R (f32)");
+        rel_le(gf, g, 0, 4e-7, "sphere g at small a/R (f32)");
         rel_le(e64.F, F, Fna + fabs(F), 1e-14, "sphere F at small a/R (f64)");
     }
 }
 
+/* The equilibrium state of every profile but the wavy one against the
+ * closed forms above: d = g - dl, F = 2E*(a d - G), dd/da, dF/da and the
+ * stability flags from g' (relative to the size of the terms, 2e-15 f64,
+ * 5e-7 f32); K_I and G of the state (a, d(a)) through mdr_stress_intensity
+ * equal sqrt(2 E* w) and w (4.17: the inputs; 2e-15 and 4e-15, f32 K_I
+ * 8e-7). */
 static void round_trips(void **st)
 {
     (void)st;
-    for (uint8_t k = MDR_PROFILE_PARABOLOID; k <= MDR_PROFILE_WAVY; k++) {
-        double E = 2e6, w = 0.07, p0 = k == MDR_PROFILE_CONE ? 0.3 : 1e-5;
+    for (uint8_t k = MDR_PROFILE_PARABOLOID; k < MDR_PROFILE_WAVY; k++) {
+        double E = 2e6, w = 0.07, p0 = k == MDR_PROFILE_CONE ? 0.3 : k == MDR_PROFILE_POWERLAW ? 1e5 : 1e-5;
         double p1 = k == MDR_PROFILE_POWERLAW ? 2.5 : (k == MDR_PROFILE_FLATTIP ? 2e-6 : 1e-8);
-        double p2 = 2e-6;
-        mdr_contact_f64 c = mk64(k, k == MDR_PROFILE_POWERLAW ? 1e5 : p0, p1, p2, E, w);
-        mdr_contact_f32 cf = mk32(k, k == MDR_PROFILE_POWERLAW ? 1e5 : p0, p1, p2, E, w);
+        double p[3] = {p0, p1, 2e-6};
+        mdr_contact_f64 c = mk64(k, p0, p1, 2e-6, E, w);
+        mdr_contact_f32 cf = mk32(k, p0, p1, 2e-6, E, w);
         double kic = sqrt(2 * E * w);
         for (double a = 3e-6; a < 9e-6; a *= 1.13) {
             mdr_eqstate_f64 e;
             mdr_eqstate_f32 ef;
-            double K, G, g, Gi;
-            float Kf, gf, Gif;
+            double K, G, g, dg, Gc, dl = sqrt(2 * M_PI * a * w / E);
+            float Kf;
             if (k == MDR_PROFILE_FLATPUNCH && a > p0) {
                 break;
             }
+            profile_cf(k, p, a, &g, &dg, &Gc);
             assert_int_equal(mdr_eq_f64(&c, a, &e), MDR_OK);
+            rel_le(e.d, g - dl, g + dl, 2e-15, "d = g - dl");
+            rel_le(e.F, 2 * E * (a * e.d - Gc), 2 * E * (a * (g + dl) + Gc), 2e-15, "F = 2E(a d - G)");
+            rel_le(e.dd_da, dg - dl / (2 * a), fabs(dg) + dl / (2 * a), 2e-15, "dd/da");
+            rel_le(e.dF_da, 2 * E * (a * dg - 1.5 * dl), 2 * E * (a * fabs(dg) + 1.5 * dl), 2e-15, "dF/da");
+            assert_int_equal(e.stable_load, a * dg - 1.5 * dl > 0);
+            assert_int_equal(e.stable_grips, dg - dl / (2 * a) > 0);
+            /* f32 at the float radius: the closed forms there */
             assert_int_equal(mdr_eq_f32(&cf, (float)a, &ef), MDR_OK);
+            {
+                double af = (float)a, dlf = sqrt(2 * M_PI * af * (float)w / (float)E);
+                double pf[3] = {(float)p0, (float)p1, (float)2e-6};
+                profile_cf(k, pf, af, &g, &dg, &Gc);
+                rel_le(ef.d, g - dlf, g + dlf, 5e-7, "d = g - dl (f32)");
+                rel_le(ef.F, 2 * (float)E * (af * ef.d - Gc), 2 * E * (af * (g + dlf) + Gc), 5e-7,
+                       "F = 2E(a d - G) (f32)");
+                rel_le(ef.dF_da, 2 * (float)E * (af * dg - 1.5 * dlf), 2 * E * (af * fabs(dg) + 1.5 * dlf),
+                       5e-7, "dF/da (f32)");
+            }
             /* K_I of the state (a, d(a)) is the critical value sqrt(2E*w); G = w */
             assert_int_equal(mdr_stress_intensity_f64(&c, a, e.d, &K, &G), MDR_OK);
-            rel_le(K, kic, 0, 1e-9, "K_I = sqrt(2 E* w)");
-            rel_le(G, w, 0, 1e-9, "G = w");
-            rel_le(e.K_I, kic, 0, 1e-14, "eq K_I");
+            rel_le(K, kic, 0, 2e-15, "K_I = sqrt(2 E* w)");
+            rel_le(G, w, 0, 4e-15, "G = w");
+            rel_le(e.K_I, kic, 0, 2e-15, "eq K_I");
             assert_int_equal(mdr_stress_intensity_f32(&cf, (float)a, ef.d, &Kf, NULL), MDR_OK);
-            rel_le(Kf, kic, 0, 2e-5, "K_I f32");
-            /* F = 2E*(a d - G) from the profile's G */
-            assert_int_equal(mdr_profile_eval_f64(&c, a, &g, NULL, &Gi), MDR_OK);
-            rel_le(e.F, 2 * E * (a * e.d - Gi), 2 * E * a * (g + e.dl), 1e-12, "F = 2E(a d - G)");
-            assert_int_equal(mdr_profile_eval_f32(&cf, (float)a, &gf, NULL, &Gif), MDR_OK);
-            rel_le(ef.F, 2 * E * ((double)(float)a * ef.d - Gif), 2 * E * a * (gf + ef.dl), 1e-5,
-                   "F = 2E(a d - G) f32");
-            /* stability flags agree with the slopes */
-            assert_int_equal(e.stable_load, e.dF_da > 0);
-            assert_int_equal(e.stable_grips, e.dd_da > 0);
+            rel_le(Kf, kic, 0, 8e-7, "K_I f32");
         }
     }
 }
@@ -547,7 +632,7 @@ static void stress_paraboloid_4_42(void **st)
         double want = pbar * (-1.5 * sqrt(1 - s * s) + 0.5 * (1 - e.F / Fna) / sqrt(1 - s * s));
         float sf;
         assert_int_equal(mdr_stress_f64(&c, a, s * a, &sig), MDR_OK);
-        rel_le(sig, want, pbar / sqrt(1 - s * s), 1e-13, "4.42");
+        rel_le(sig, want, pbar / sqrt(1 - s * s), 4e-15, "4.42");
         assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)(s * a), &sf), MDR_OK);
         rel_le(sf, want, pbar / sqrt(1 - s * s), 2e-6, "4.42 f32");
     }
@@ -569,7 +654,7 @@ static void stress_flat_tip_on_the_flat(void **st)
             double want = -E * e.d / (M_PI * sqrt(a * a - s * a * s * a)), sig;
             float sf;
             assert_int_equal(mdr_stress_f64(&c, a, s * a, &sig), MDR_OK);
-            rel_le(sig, want, 0, 1e-13, "flat tip, a <= b");
+            rel_le(sig, want, 0, 5e-15, "flat tip, a <= b");
             assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)(s * a), &sf), MDR_OK);
             rel_le(sf, want, 0, 2e-6, "flat tip, a <= b, f32");
         }
@@ -593,7 +678,7 @@ static void wavy_phase_of_many_wavelengths(void **st)
         assert_int_equal(mdr_profile_eval_f64(&c, (double)x, &g, NULL, &G), MDR_OK);
         assert_int_equal(mdr_profile_eval_f32(&cf, x, &gf, NULL, &Gf), MDR_OK);
         /* the terms x^2/R and pi^2 x h/lambda H0 (|H0| <= 1) */
-        rel_le(gf, g, (double)x * (double)x / (double)R + 9.87 * (double)x * (double)h / (double)lam, 4e-7,
+        rel_le(gf, g, (double)x * (double)x / (double)R + 9.87 * (double)x * (double)h / (double)lam, 5e-8,
                "wavy g, many wavelengths");
     }
     {
@@ -627,6 +712,7 @@ static void machine_limits(void **st)
     assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, 1e-7, a0, &os), MDR_OK);
     assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, 1e7, a0, &oh), MDR_OK);
     assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, 2.0, a0, &om), MDR_OK);
+    /* a physical limit, not a rounding bound: F differs by O(k_m/(2E* a)) */
     rel_le(os.F, ol.F, 0, 1e-6, "soft machine = fixed load");
     rel_le(oh.F, og.F, 0, 1e-6, "stiff machine = fixed grips");
     assert_true(om.F < og.F && om.F > ol.F);
