@@ -29,3 +29,24 @@
     }
 NAIVE_SUM(f32)
 NAIVE_SUM(f64)
+
+/* g(a) of a table's quadratic spring interpolant (mdr_engine_t.h),
+ * recomputed here in double from the nodes: the band of the rule of Hess
+ * checked against something the engine did not compute */
+#define TABLE_G(SFX)                                                                       \
+    static double table_g_##SFX(const mdr_table_##SFX *t, double a)                        \
+    {                                                                                      \
+        double h = t->h, e, s, be;                                                         \
+        long k = (long)(a / h);                                                            \
+        const mdr_node_##SFX *p;                                                           \
+        if (k >= (long)t->n) {                                                             \
+            k = (long)t->n - 1;                                                            \
+        }                                                                                  \
+        p = &t->node[k];                                                                   \
+        e = a - h * (double)k;                                                             \
+        s = ((double)p[1].g - (double)p->g) / h;                                           \
+        be = 6 * (double)p->q / (h * h * h);                                               \
+        return (double)p->g + e * (s + be * (h - e));                                      \
+    }
+TABLE_G(f32)
+TABLE_G(f64)

@@ -24,7 +24,10 @@ typedef struct {
     ref_scene s;
     double L;    /* table extent */
     int gap;     /* 1: tabulated tip (GAP_SAMPLES samples of s's gap profile) */
-    double goal; /* tolerance of test_q31's e_curve and e_po against ref */
+    double goal; /* the accuracy goal of test_q31's e_curve and e_po against ref */
+    double table; /* test_q31: tolerance of the f64 engine's e_curve at N = 1024
+                   * against ref, the table's own error (about 4x the worst
+                   * measured over the three controls; exact tables: rounding) */
 } scene;
 
 #define GOAL_SMOOTH 1e-4
@@ -33,15 +36,15 @@ typedef struct {
 #define GAP_SAMPLES 600
 
 static const scene scenes[] = {
-    {"paraboloid", "paraboloid", {MDR_PROFILE_PARABOLOID, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_SMOOTH},
-    {"cone", "cone", {MDR_PROFILE_CONE, {0.5, 0, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH},
-    {"power law n=3", "powerlaw", {MDR_PROFILE_POWERLAW, {5e11, 3, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH},
-    {"flat punch", "flatpunch", {MDR_PROFILE_FLATPUNCH, {1e-6, 0, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH},
-    {"exact sphere", "sphere", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_SMOOTH},
-    {"flattened tip", "flattip", {MDR_PROFILE_FLATTIP, {1e-6, 0.2e-6, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_FLATTIP},
+    {"paraboloid", "paraboloid", {MDR_PROFILE_PARABOLOID, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_SMOOTH, 4e-14},
+    {"cone", "cone", {MDR_PROFILE_CONE, {0.5, 0, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH, 4e-14},
+    {"power law n=3", "powerlaw", {MDR_PROFILE_POWERLAW, {5e11, 3, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH, 1.5e-9},
+    {"flat punch", "flatpunch", {MDR_PROFILE_FLATPUNCH, {1e-6, 0, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH, 5e-16},
+    {"exact sphere", "sphere", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_SMOOTH, 4e-9},
+    {"flattened tip", "flattip", {MDR_PROFILE_FLATTIP, {1e-6, 0.2e-6, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_FLATTIP, 2e-3},
     {"wavy (4.54)", "wavy", {MDR_PROFILE_WAVY, {100e-6, 0.15e-6, 5e-6}, 1e6, 0.7957747154594767}, 80e-6, 0,
-     GOAL_SMOOTH},
-    {"tabulated sphere", "table", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 1, GOAL_SMOOTH},
+     GOAL_SMOOTH, 8e-6},
+    {"tabulated sphere", "table", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 1, GOAL_SMOOTH, 4e-7},
 };
 #define NSCENES (sizeof scenes / sizeof scenes[0])
 

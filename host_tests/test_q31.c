@@ -15,19 +15,31 @@
  *   e_curve_f64  the same for the f64 engine on the same table and inputs;
  *   e_po     |F_pull-off - F_ref| / |F_ref|, F_ref from ref_critical for the
  *            control (and machine stiffness) from the approach's radius.
- * Tolerances: e_curve and e_po below GOAL_SMOOTH = 1e-4 (scenes.h) (the goal of issue 4),
- * except the flattened tip: GOAL_FLATTIP = 5e-3, the error of the 1024-spring
- * table itself (the f64 engine's is the same): at the rim x = b of the flat
- * g' grows like 1/sqrt(x - b), which quadratic springs of width h resolve
- * only to O(h^1.5), and the grips pull-off lies close to the rim.
- * The fixed-point part, in LSB of the force format (2^-29 F0): the
- * residual of the q31 state against the f64 table's own interpolant (so
- * the table's discretisation drops out) and |F_po,q31 - F_po,f64|, at most
- * TOL_LSB = 8: t is held to one ulp of Q1.30, worth |dD/dt| 2^-30 of D0 with
- * |dD/dt| = |2 t g' - c| <= 2*8 + 1, plus a few roundings; a depth error
- * reaches the force through 2E* a <= F0/D0. An engine set up by the float
- * init (mdr_engine_init_q31_f32) carries its constants to ~2^-22 relative:
- * TOL_LSB_F32 = 128 = 2^-22 / 2^-29 LSB.
+ * Tolerances (MDR_TOL_REPORT=1 prints the share of each the run used):
+ *   the table's own error, e_curve of the f64 engine: below the scene's
+ *     `table` bound (scenes.h, ~4x the measured worst of its controls; the
+ *     paraboloid's and cone's tables are exact: rounding);
+ *   the fixed point on top of it: e_curve of q31 <= e_curve of f64 + TOL_LSB
+ *     LSB of F relative to max|F|; in LSB of the force format (2^-29 F0),
+ *     the residual of the q31 state against the f64 table's own interpolant
+ *     (so the table's discretisation drops out) and |F_po,q31 - F_po,f64|,
+ *     at most TOL_LSB = 8 (measured 1.9 and 0.8): t is held to one ulp of
+ *     Q1.30, worth |dD/dt| 2^-30 of D0 with |dD/dt| = |2 t g' - c| <= 2*8 + 1,
+ *     plus a few roundings; a depth error reaches the force through 2E* a <=
+ *     F0/D0;
+ *   an engine set up by the float init (mdr_engine_init_q31_f32): its
+ *     constants carry ~3 eps_f32 relative error (sqrt, products, quotients
+ *     in float), so the residual may grow by 4 eps_f32 2^29 (dl(L)/D0 +
+ *     max|u|) LSB over TOL_LSB: a bound from the rounding of the constants
+ *     (up to 70 LSB for a control at 1/2 unit), not from the measured error
+ *     (3.6 LSB), because how much of it a cycle meets depends on where the
+ *     constants' rounding fell;
+ *   the goals of issue 4, asserted too: e_curve and e_po below
+ *     GOAL_SMOOTH = 1e-4, except the flattened tip: GOAL_FLATTIP = 5e-3, the
+ *     error of the 1024-spring table itself (the f64 engine's is the same): at
+ *     the rim x = b of the flat g' grows like 1/sqrt(x - b), which quadratic
+ *     springs of width h resolve only to O(h^1.5), and the grips pull-off
+ *     lies close to the rim.
  * The engine is set up by mdr_engine_init_q31_f64 (constants to 2^-30);
  * inputs are converted to Q2.29 with double arithmetic (rounded), outputs
  * back to SI the same way, with the double units L + L_lo and 2E* L D0.
@@ -56,9 +68,9 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, q31, the spring engine and every profile")
 #define SCENES_REF
 #endif
 #include "scenes.h"
+#include "test_util.h"
 
 #define TOL_LSB 8.0
-#define TOL_LSB_F32 128.0
 #define NSPR 1024
 #define NCHECK 96
 
@@ -79,7 +91,7 @@ static int32_t q29(double v, double unit)
 }
 
 typedef struct {
-    double eC, eF, ePo, dPo, lsb, lsbf, Fmax;
+    double eC, eF, ePo, dPo, lsb, lsbf, Fmax, Fq, tolf;
     int jumps;
 } result;
 
@@ -106,7 +118,8 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
     mdr_engine_q31 q, qf;
     mdr_step_f64 o, po64 = {0};
     mdr_step_q31 oq, oqf, po = {0};
-    result res = {0, 0, 0, 0, 0, 0, 0, 0};
+    result res = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    double umax = 0;
     double E = sc->s.E, w = sc->s.w, km, a_top = 0, unit, Dq, Fq, Lq;
     const int nup = 1500, ndown = 3000;
     int i, checked = 0;
@@ -123,6 +136,7 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
     unit = ctl == MDR_CONTROL_GRIPS ? q.D0 : ctl == MDR_CONTROL_LOAD ? 2 * E * Lq * q.D0 : q.Z0;
     for (i = 1; i <= nup + ndown; i++) {
         int32_t uq = q29(scene_u(&P, ctl, nup, ndown, i), unit);
+        umax = fmax(umax, fabs(uq / 536870912.0));
         double uf = uq * unit / 536870912.0; /* the same input for f64 */
         int sample = i % ((nup + ndown) / NCHECK) == 0;
         double F;
@@ -166,6 +180,8 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
     res.dPo = fabs(po.F0 * Fq - po64.F0) / Fq; /* in LSB of F */
     res.eC /= res.Fmax;
     res.eF /= res.Fmax;
+    res.Fq = Fq;
+    res.tolf = TOL_LSB + 4 * 5.960464477539063e-08 * 536870912.0 * (q.c_w / 536870912.0 + umax);
     return res;
 }
 
@@ -193,11 +209,22 @@ static void scenes_vs_ref(void **st)
             worst[2] = fmax(worst[2], r.ePo);
             worst[3] = fmax(worst[3], r.dPo);
             worst[4] = fmax(worst[4], r.lsbf);
-            assert_true(r.eC < scenes[k].goal);
-            assert_true(r.ePo < scenes[k].goal);
-            assert_true(r.lsb <= TOL_LSB);
-            assert_true(r.dPo <= TOL_LSB);
-            assert_true(r.lsbf <= TOL_LSB_F32);
+            {
+                char what[128];
+                snprintf(what, sizeof what, "e_curve f64 (the table) [%s %s]", scenes[k].key, cn[ctl]);
+                err_le(r.eF, scenes[k].table, what);
+                snprintf(what, sizeof what, "e_curve q31 - f64 [%s %s]", scenes[k].key, cn[ctl]);
+                err_le(r.eC - r.eF, TOL_LSB * r.Fq / r.Fmax, what);
+                snprintf(what, sizeof what, "q31 LSB against the f64 table [%s %s]", scenes[k].key, cn[ctl]);
+                err_le(r.lsb, TOL_LSB, what);
+                snprintf(what, sizeof what, "pull-off q31 - f64, LSB [%s %s]", scenes[k].key, cn[ctl]);
+                err_le(r.dPo, TOL_LSB, what);
+                snprintf(what, sizeof what, "q31 LSB, float init [%s %s]", scenes[k].key, cn[ctl]);
+                err_le(r.lsbf, r.tolf, what);
+                /* the goals */
+                assert_true(r.eC < scenes[k].goal);
+                assert_true(r.ePo < scenes[k].goal);
+            }
         }
     }
     printf("    worst: e_curve %.2e, pull-off %.2e; q31 - f64: %.1f LSB, %.1f LSB; f32 init %.1f LSB\n",

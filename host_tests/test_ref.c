@@ -2,8 +2,11 @@
  * test_ref.c: proves the GSL reference (ref/) against the closed forms of the
  * seed chapter before anything is compared against it.
  *
- * Tolerance: REL = 1e-10 relative on every quantity (depths of power laws
- * relative to the scale dl(a), since d_c = 0 exactly at n = 1.5).
+ * Tolerance: REL = 5e-12 relative on every quantity (depths of power laws
+ * relative to the scale dl(a), since d_c = 0 exactly at n = 1.5): the
+ * design asks for ~1e-10; measured 6.4e-13 (the curves' F, GSL's adaptive
+ * quadrature), so a change that loosens the reference shows here first
+ * (MDR_TOL_REPORT=1 prints the share of REL each check used).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -15,12 +18,14 @@
 
 #include "mdr_ref.h"
 #include "mdr_types.h"
+#include "test_util.h"
 
-#define REL 1e-10
+#define REL 5e-12
 
 static void near(double got, double want, double scale, const char *what)
 {
     double tol = REL * (scale > 0 ? scale : fabs(want));
+    mdr_tol_note(what, fabs(got - want) / tol);
     if (!(fabs(got - want) <= tol)) {
         print_error("%s: got %.17g want %.17g (|diff| %.3g > %.3g)\n", what, got, want,
                     fabs(got - want), tol);
