@@ -14,6 +14,9 @@
 #   make lint       cppcheck + clang-tidy (configuration: .clang-tidy,
 #                   .cppcheck-suppressions)
 #   make fuzz       libFuzzer targets, FUZZ_TIME s each (fuzz-replay: the corpus)
+#   make mutate     the mutation gate: every deliberate bug of
+#                   host_tests/mutations.txt must fail a suite (mutate-quick:
+#                   one per module, in make test)
 #   make tables     regenerate lib/src/math/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
 #
@@ -39,7 +42,7 @@ LIB_SRC := $(MDR_SRC_ALL)
 LIB_DEPS := $(MDR_DEPS) $(wildcard lib/src/*.c port/*/mdr_port.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: matrix lint fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: mutate mutate-quick matrix lint fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
@@ -187,25 +190,39 @@ test: deps
 	$(MAKE) --no-print-directory fuzz
 	$(MAKE) --no-print-directory stress
 	$(MAKE) --no-print-directory q31-exact
+	$(MAKE) --no-print-directory mutate-quick
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
-	@echo "suites: $(words $(TESTS) cli lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words $(TESTS) cli lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 # The q31 step is integer arithmetic: the same inputs must give the same
 # outputs whatever the compiler and optimisation level (a difference means
-# undefined or implementation-defined behaviour). One fingerprint per build.
+# undefined or implementation-defined behaviour), and the committed
+# fingerprint (host_tests/q31_trace.expected): a change of the arithmetic
+# changes that file in the same commit, with the reason.
 EXACT_BUILDS := gcc:-O0 gcc:-O2 gcc:-O3 clang:-O0 clang:-O2 clang:-Os
+Q31_EXPECTED := host_tests/q31_trace.expected
 q31-exact:
 	@mkdir -p $(B)/exact
-	@set -e; ref=""; for b in $(EXACT_BUILDS); do \
+	@set -e; ref="$$(cat $(Q31_EXPECTED))"; for b in $(EXACT_BUILDS); do \
 	  cc=$${b%%:*}; opt=$${b#*:}; out=$(B)/exact/q31_trace_$$cc$$opt; \
 	  $$cc -std=c99 -ffreestanding -fno-math-errno $(WARN) -Ilib/include -Iport/host $$opt \
 	    lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c -c; \
 	  mv mdr_f32.o mdr_f64.o mdr_q31.o mdr_status.o $(B)/exact/; \
 	  $$cc -std=c99 $(WARN) -Ilib/include $$opt host_tests/q31_trace.c $(B)/exact/mdr_*.o -o $$out; \
 	  r=$$(./$$out); echo "$$cc $$opt: $$r"; \
-	  if [ -z "$$ref" ]; then ref="$$r"; elif [ "$$r" != "$$ref" ]; then echo "q31 outputs differ between builds"; exit 1; fi; \
-	done; echo "q31-exact: $(words $(EXACT_BUILDS)) builds, identical outputs"
+	  if [ "$$r" != "$$ref" ]; then echo "q31 outputs differ from $(Q31_EXPECTED): $$ref"; exit 1; fi; \
+	done; echo "q31-exact: $(words $(EXACT_BUILDS)) builds, outputs identical to $(Q31_EXPECTED)"
+
+# The mutation gate (host_tests/mutate.py, list host_tests/mutations.txt):
+# each deliberate bug of the list applied to a scratch copy of lib/, the
+# fast suites run against it; it fails if one survives (but those shown
+# equivalent). mutate-quick: one mutation per module (in make test).
+PYTHON ?= python3
+mutate: $(B)/host/gen_tip.c
+	$(PYTHON) host_tests/mutate.py --jobs 2
+mutate-quick: $(B)/host/gen_tip.c
+	$(PYTHON) host_tests/mutate.py --quick --jobs 2
 
 # engine step cost against N and against the naive O(N) force sum (one run)
 $(B)/host/bench_engine: host_tests/bench_engine.c host_tests/bench_scene.h $(B)/host/libmdr.a
@@ -422,10 +439,10 @@ $(B)/tgt-$(1)/%.run: $(B)/tgt-$(1)/%.elf $(B)/host/q31_trace $(B)/host/test_vect
 	@rm -f $$@; port/cortex-m/run-qemu -M $(QEMU_$(1)) -t 600 $$< > $(B)/tgt-$(1)/$$*.log 2>&1 || \
 	  { cat $(B)/tgt-$(1)/$$*.log; echo "target $(QEMU_$(1)): $$* failed"; exit 1; }
 	@if [ $$* = q31_trace ]; then \
-	  ./$(B)/host/q31_trace > $(B)/tgt-$(1)/q31_trace.host; \
-	  cmp -s $(B)/tgt-$(1)/q31_trace.host $(B)/tgt-$(1)/q31_trace.log || \
-	    { echo "target $(QEMU_$(1)): q31 outputs differ from the host's"; cat $(B)/tgt-$(1)/q31_trace.*; exit 1; }; \
-	  echo "q31 outputs identical to the host's" >> $(B)/tgt-$(1)/q31_trace.log; fi
+	  cmp -s $(Q31_EXPECTED) $(B)/tgt-$(1)/q31_trace.log || \
+	    { echo "target $(QEMU_$(1)): q31 outputs differ from $(Q31_EXPECTED) (the host's)"; \
+	      cat $(Q31_EXPECTED) $(B)/tgt-$(1)/q31_trace.log; exit 1; }; \
+	  echo "q31 outputs identical to the host's ($(Q31_EXPECTED))" >> $(B)/tgt-$(1)/q31_trace.log; fi
 	@if [ $$* = test_vectors ]; then \
 	  ./$(B)/host/test_vectors 2>/dev/null | grep ' f32 ' > $(B)/tgt-$(1)/f32.host; \
 	  grep ' f32 ' $(B)/tgt-$(1)/test_vectors.log | diff $(B)/tgt-$(1)/f32.host - || \

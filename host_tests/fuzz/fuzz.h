@@ -162,6 +162,23 @@ static inline mdr_status fz_step_q31(mdr_engine_q31 *e, int ctl, int32_t v, mdr_
          : ctl == FZ_F ? mdr_engine_step_F_q31(e, v, out)
                        : mdr_engine_step_z_q31(e, v, out);
     fz_check_q31(e, &before, st, out, &o0);
+    if (st == MDR_E_OUTSIDE) {
+        /* refused only where the target lies beyond the last node (as the
+         * float engines, fuzz_engine_t.h), in units of D0 and L D0: at a = L
+         * D = (g_n Dg 2^-30 - dl_adv(L))/D0, z = D + kappa (D - G) with
+         * kappa = 1/al_z - 1, the target v saturated to +-2 units, to
+         * 8 LSB of its format (1 + kappa for the machine) */
+        const mdr_table_q31 *tab = e->tab;
+        const mdr_node_q31 *nn = &tab->node[tab->n];
+        double sc = (double)tab->Dg / (double)e->D0 / 1073741824.0;
+        double D = nn->g * sc - e->c_adv / 536870912.0, G = nn->G * sc;
+        double kap = e->machine ? 1073741824.0 / e->al_z - 1 : 0;
+        double vs = (v > 2 * MDR_Q29_ONE ? 2 * MDR_Q29_ONE : v < -2 * MDR_Q29_ONE ? -2 * MDR_Q29_ONE : v) /
+                    536870912.0;
+        double U = ctl == FZ_D ? D : ctl == FZ_F ? D - G : D + kap * (D - G);
+        double u = ctl == FZ_Z ? vs * (double)(1u << e->sz) : vs;
+        FZ_CHECK(!tab->wall && U < u + 8.0 / 536870912.0 * (1 + kap));
+    }
     if (v > 2 * MDR_Q29_ONE || v < -2 * MDR_Q29_ONE) {
         FZ_CHECK(st != MDR_OK || (e->flags & MDR_FLAG_SAT));
     }

@@ -78,6 +78,22 @@ static inline mdr_status FZ_SFX(fz_step)(FZ_SFX(mdr_engine) *e, int ctl, FZ_T v,
          : ctl == FZ_F ? FZ_SFX(mdr_engine_step_F)(e, v, out)
                        : FZ_SFX(mdr_engine_step_z)(e, v, out);
     FZ_SFX(fz_check)(e, &before, st, out, &o0);
+    if (st == MDR_E_OUTSIDE) {
+        /* refused only where the target lies beyond the last node: the
+         * approach branch's control there, U(x_n) = al D + ka (x D - G),
+         * D = g - c_adv t, is below the target (a fold on the way lands
+         * still lower), to the rounding of U's terms */
+        const FZ_SFX(mdr_table) *tab = e->tab;
+        const FZ_SFX(mdr_node) *nn = &tab->node[tab->n];
+        const double eps = sizeof(FZ_T) == sizeof(float) ? (double)FLT_EPSILON : DBL_EPSILON;
+        double x = (double)tab->n * (double)tab->h, g = (double)nn->g, G = (double)nn->G;
+        double ct = (double)e->c_adv * (double)nn->t, D = g - ct;
+        double al = ctl == FZ_F ? 0 : 1, ka = ctl == FZ_D ? 0 : ctl == FZ_F ? 1 : (double)e->kappa;
+        double U = al * D + ka * (x * D - G);
+        double u = ctl == FZ_F ? (double)v / (2 * (double)e->E) : (double)v;
+        double tol = 16 * eps * (al * (fabs(g) + ct) + ka * (x * (fabs(g) + ct) + fabs(G)) + fabs(u));
+        FZ_CHECK(!tab->wall && U < u + tol);
+    }
     return st;
 }
 

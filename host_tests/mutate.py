@@ -1,0 +1,296 @@
+#!/usr/bin/env python3
+"""host_tests/mutate.py: the mutation gate (make mutate, make mutate-quick).
+
+Applies each mutation of host_tests/mutations.txt to a scratch copy of lib/,
+one at a time, builds the library from the copy, links the fast suites
+against it and runs them in order until one fails (the mutant is "killed").
+A mutant that every suite passes "survived": a bug the tests would not see.
+Mutants marked `equivalent:` (with the argument why no test can tell them
+from the original) must survive; one that is killed is a list error.
+
+The fast suites: the host cmocka suites (unit, scene, config, engine, GSL,
+vectors, engine vs ref, q31), the q31 trace against its committed
+fingerprint (host_tests/q31_trace.expected), the CLI contract and the short
+stress sweep. A suite that runs past its time limit (a mutant that loops
+until an iteration cap, or forever) counts as killing it.
+
+Usage: mutate.py [--quick] [--jobs N] [--only ID[,ID...]] [--keep]
+  --quick  only the entries marked `quick: yes` (one per module; make test)
+  --jobs   mutants built and run at once (default 2)
+  --only   the named entries
+  --keep   keep each mutant's scratch directory (build/mutate/m/<id>)
+Exit status: 0 when no mutant survives but the equivalent ones and the list
+is consistent; 1 otherwise; 2 on a malformed list.
+
+Standard library only (any python3).
+"""
+import concurrent.futures as cf
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+B = os.path.join(ROOT, "build", "mutate")
+LIST = os.path.join(ROOT, "host_tests", "mutations.txt")
+
+WARN_LIB = ["-std=c99", "-ffreestanding", "-fno-math-errno", "-ffunction-sections",
+            "-fdata-sections", "-O1", "-w"]
+TEST_CFLAGS = ["-std=c99", "-D_GNU_SOURCE", "-O1", "-w"]
+UNITS = ["mdr_f32", "mdr_f64", "mdr_q31", "mdr_status"]
+GSL = ["-lgsl", "-lgslcblas", "-lm"]
+
+# (name, sources, extra objects, libraries, command after the binary, time limit s)
+SUITES = [
+    ("test_unit", ["host_tests/test_unit.c"], [], ["-lcmocka", "-lm"], [], 60),
+    ("test_scene", ["host_tests/test_scene.c"], [], ["-lcmocka", "-lm"], [], 60),
+    ("test_step", ["host_tests/test_step.c"], [], ["-lcmocka", "-lm"], [], 60),
+    ("test_config", ["host_tests/test_config.c"], [], ["-lcmocka", "-lm"], [], 60),
+    ("test_engine", ["host_tests/test_engine.c"], ["gen_tip"], ["-lcmocka", "-lm"], [], 60),
+    ("test_gsl", ["host_tests/test_gsl.c"], ["ref"], ["-lcmocka"] + GSL, [], 60),
+    ("q31_trace", ["host_tests/q31_trace.c"], [], ["-lm"], [], 60),
+    ("test_vectors", ["host_tests/test_vectors.c"], [], ["-lcmocka", "-lm"], [], 60),
+    ("cli", ["examples/mdr_cli.c"], [], ["-lm"], [], 60),
+    ("test_engine_ref", ["host_tests/test_engine_ref.c"], ["ref"], ["-lcmocka"] + GSL, [], 90),
+    ("test_q31", ["host_tests/test_q31.c"], ["ref"], ["-lcmocka"] + GSL, [], 120),
+    ("stress", ["host_tests/stress.c"], [], ["-lm"], ["short"], 120),
+]
+
+
+def parse_list(path):
+    entries, cur, errors = [], None, []
+    with open(path) as fp:
+        for no, line in enumerate(fp, 1):
+            line = line.rstrip("\n")
+            if line.startswith("#"):
+                continue
+            if not line.strip():
+                if cur:
+                    entries.append(cur)
+                    cur = None
+                continue
+            key, sep, val = line.partition(": ")
+            if not sep:
+                key, sep, val = line.partition(":")
+            if not sep or key not in ("id", "module", "file", "old", "new", "quick", "why",
+                                      "equivalent"):
+                errors.append("%s:%d: not 'key: value' with a known key" % (path, no))
+                continue
+            if key == "id":
+                if cur:
+                    entries.append(cur)
+                cur = {"line": no}
+            elif cur is None:
+                errors.append("%s:%d: an entry starts with id:" % (path, no))
+                continue
+            cur[key] = val
+    if cur:
+        entries.append(cur)
+    for e in entries:  # a literal \n in old or new stands for a line break
+        for k in ("old", "new"):
+            if k in e:
+                e[k] = e[k].replace("\\n", "\n")
+    seen = set()
+    for e in entries:
+        for k in ("id", "module", "file", "old", "new"):
+            if k not in e:
+                errors.append("%s:%d: entry without %s" % (path, e["line"], k))
+        if e.get("id") in seen:
+            errors.append("%s:%d: duplicate id %s" % (path, e["line"], e.get("id")))
+        seen.add(e.get("id"))
+    return entries, errors
+
+
+def run(cmd, cwd=None, timeout=None):
+    return subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          timeout=timeout)
+
+
+def check_entry(e):
+    """The old text must occur exactly once in the file; returns an error or None."""
+    path = os.path.join(ROOT, e["file"])
+    if not os.path.isfile(path):
+        return "%s: no file %s" % (e["id"], e["file"])
+    if not e["file"].startswith("lib/"):
+        return "%s: mutations apply to lib/ only" % e["id"]
+    text = open(path).read()
+    n = text.count(e["old"])
+    if n != 1:
+        return "%s: the old text occurs %d times in %s (must be once)" % (e["id"], n, e["file"])
+    if e["old"] == e["new"]:
+        return "%s: old and new are the same" % e["id"]
+    return None
+
+
+def prebuild():
+    """Test objects and shared objects, compiled once against the real headers."""
+    os.makedirs(os.path.join(B, "obj"), exist_ok=True)
+    inc = ["-I" + os.path.join(ROOT, d) for d in ("lib/include", "ref", "port/host", "host_tests",
+                                                  "examples")]
+    jobs = []
+    for name, srcs, _, _, _, _ in SUITES:
+        for s in srcs:
+            jobs.append((os.path.join(ROOT, s), os.path.join(B, "obj", name + ".o")))
+    jobs.append((os.path.join(ROOT, "ref/mdr_ref.c"), os.path.join(B, "obj", "ref.o")))
+    gen = os.path.join(ROOT, "build/host/gen_tip.c")
+    if not os.path.isfile(gen):
+        r = run(["make", "--no-print-directory", "build/host/gen_tip.c"], cwd=ROOT)
+        if r.returncode != 0:
+            sys.exit("mutate: cannot build build/host/gen_tip.c:\n" + r.stdout.decode())
+    jobs.append((gen, os.path.join(B, "obj", "gen_tip.o")))
+    for src, obj in jobs:
+        if os.path.isfile(obj) and os.path.getmtime(obj) > max(
+                os.path.getmtime(src), newest_header()):
+            continue
+        flags = TEST_CFLAGS + (["-Wall"] if False else [])
+        r = run(["gcc"] + flags + inc + ["-c", src, "-o", obj])
+        if r.returncode != 0:
+            sys.exit("mutate: cannot compile %s:\n%s" % (src, r.stdout.decode()))
+
+
+_newest = None
+
+
+def newest_header():
+    global _newest
+    if _newest is None:
+        t = 0.0
+        for d in ("lib/include", "host_tests", "ref", "examples"):
+            for f in os.listdir(os.path.join(ROOT, d)):
+                if f.endswith(".h"):
+                    t = max(t, os.path.getmtime(os.path.join(ROOT, d, f)))
+        _newest = t
+    return _newest
+
+
+def expected_trace():
+    with open(os.path.join(ROOT, "host_tests", "q31_trace.expected")) as fp:
+        return fp.read().strip()
+
+
+def mutant(e, keep):
+    """Build and test one mutant; returns (id, verdict, detail, seconds)."""
+    t0 = time.time()
+    d = os.path.join(B, "m", e["id"])
+    shutil.rmtree(d, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "lib"), os.path.join(d, "lib"))
+    path = os.path.join(d, e["file"])
+    text = open(path).read()
+    open(path, "w").write(text.replace(e["old"], e["new"], 1))
+    inc = ["-I" + os.path.join(d, "lib/include"), "-I" + os.path.join(ROOT, "port/host")]
+    objs = []
+    for u in UNITS:
+        o = os.path.join(d, u + ".o")
+        r = run(["gcc"] + WARN_LIB + inc + ["-c", os.path.join(d, "lib/src", u + ".c"), "-o", o])
+        if r.returncode != 0:
+            return (e["id"], "error", "mutant does not compile: " +
+                    r.stdout.decode().strip().splitlines()[0], time.time() - t0)
+        objs.append(o)
+    lib = os.path.join(d, "libmdr.a")
+    run(["ar", "rcs", lib] + objs)
+    header_mutant = e["file"].startswith("lib/include")
+    verdict, detail = "survived", ""
+    for name, srcs, extra, libs, args, limit in SUITES:
+        exe = os.path.join(d, name)
+        if header_mutant:  # tests see the mutated headers: compile from source
+            tinc = inc + ["-I" + os.path.join(ROOT, x) for x in ("ref", "host_tests", "examples")]
+            ins = [os.path.join(ROOT, s) for s in srcs]
+            flags = TEST_CFLAGS + tinc
+        else:
+            ins = [os.path.join(B, "obj", name + ".o")]
+            flags = []
+        ins += [os.path.join(B, "obj", x + ".o") for x in extra]
+        r = run(["gcc"] + flags + ins + [lib] + libs + ["-o", exe])
+        if r.returncode != 0:
+            return (e["id"], "error", "cannot link %s: %s" % (name, r.stdout.decode()[:200]),
+                    time.time() - t0)
+        try:
+            if name == "cli":
+                r = run(["bash", os.path.join(ROOT, "host_tests/test_cli.sh"), exe], cwd=ROOT,
+                        timeout=limit)
+                failed = r.returncode != 0
+            elif name == "q31_trace":
+                r = run([exe], timeout=limit)
+                failed = r.returncode != 0 or r.stdout.decode().strip() != expected_trace()
+            else:
+                r = run([exe] + args, cwd=ROOT, timeout=limit)
+                failed = r.returncode != 0
+        except subprocess.TimeoutExpired:
+            verdict, detail = "killed", "%s (time limit %d s)" % (name, limit)
+            break
+        if failed:
+            verdict, detail = "killed", name
+            break
+    if not keep:
+        shutil.rmtree(d, ignore_errors=True)
+    return (e["id"], verdict, detail, time.time() - t0)
+
+
+def main(argv):
+    quick, jobs, only, keep = False, 2, None, False
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a == "--quick":
+            quick = True
+        elif a == "--keep":
+            keep = True
+        elif a == "--jobs" and i + 1 < len(argv):
+            i += 1
+            jobs = int(argv[i])
+        elif a == "--only" and i + 1 < len(argv):
+            i += 1
+            only = set(argv[i].split(","))
+        else:
+            print("mutate: unknown argument %s" % a, file=sys.stderr)
+            return 2
+        i += 1
+    entries, errors = parse_list(LIST)
+    errors += [m for m in (check_entry(e) for e in entries) if m]
+    if errors:
+        print("\n".join("mutate: " + x for x in errors), file=sys.stderr)
+        return 2
+    if only:
+        entries = [e for e in entries if e["id"] in only]
+    elif quick:
+        entries = [e for e in entries if e.get("quick") == "yes"]
+    prebuild()
+    t0 = time.time()
+    results = {}
+    with cf.ThreadPoolExecutor(max_workers=jobs) as ex:
+        futs = {ex.submit(mutant, e, keep): e for e in entries}
+        for f in cf.as_completed(futs):
+            e = futs[f]
+            mid, verdict, detail, secs = f.result()
+            results[mid] = (verdict, detail, secs)
+            eq = "equivalent" in e
+            tag = verdict
+            if eq:
+                tag = "equivalent" if verdict == "survived" else "NOT EQUIVALENT (" + verdict + ")"
+            elif verdict == "survived":
+                tag = "SURVIVED"
+            print("%-28s %-10s %-34s %5.1f s  %s" % (mid, e["module"], tag + (": " + detail
+                                                                            if detail else ""),
+                                                     secs, e.get("why", "")[:60]), flush=True)
+    killed = sum(1 for e in entries if results[e["id"]][0] == "killed" and "equivalent" not in e)
+    surv = [e for e in entries if results[e["id"]][0] == "survived" and "equivalent" not in e]
+    equiv = [e for e in entries if "equivalent" in e and results[e["id"]][0] == "survived"]
+    bad_equiv = [e for e in entries if "equivalent" in e and results[e["id"]][0] != "survived"]
+    errs = [e for e in entries if results[e["id"]][0] == "error"]
+    mods = sorted(set(e["module"] for e in entries))
+    print("mutate%s: %d mutations over %d modules (%s): %d killed, %d equivalent, %d survived%s "
+          "(%.0f s, %d jobs)" % (" --quick" if quick else "", len(entries), len(mods),
+                                 " ".join(mods), killed, len(equiv), len(surv),
+                                 ", %d list errors" % (len(errs) + len(bad_equiv))
+                                 if errs or bad_equiv else "", time.time() - t0, jobs))
+    for e in surv:
+        print("  survived: %s (mutations.txt:%d, %s): %s -> %s" % (
+            e["id"], e["line"], e["file"], e["old"].strip(), e["new"].strip()))
+    for e in errs + bad_equiv:
+        print("  list error: %s: %s" % (e["id"], results[e["id"]][1] or results[e["id"]][0]))
+    return 1 if surv or errs or bad_equiv else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
