@@ -51,7 +51,7 @@ $(B)/host/%.o: lib/src/%.c $(LIB_DEPS)
 $(B)/host/libmdr.a: $(B)/host/mdr_f32.o $(B)/host/mdr_f64.o $(B)/host/mdr_q31.o $(B)/host/mdr_status.o
 	$(CROSS_COMPILE)ar rcs $@ $^
 
-$(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h examples/tip_csv.h $(B)/host/libmdr.a
+$(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h examples/mdr_host.h examples/mdr_host_t.h examples/tip_csv.h $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
 
 $(B)/host/afm_demo: examples/afm_demo.c $(B)/host/libmdr.a
