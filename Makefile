@@ -185,7 +185,8 @@ test: deps
 	$(MAKE) --no-print-directory q31-exact
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
-	@echo "suites: $(words $(TESTS) cli lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	$(MAKE) --no-print-directory python-test
+	@echo "suites: $(words $(TESTS) cli python lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 # The q31 step is integer arithmetic: the same inputs must give the same
 # outputs whatever the compiler and optimisation level (a difference means
@@ -486,7 +487,8 @@ lint: $(B)/lint/cppcheck.stamp $(foreach u,$(LINT_UNITS),$(call lint_stamp,$(u))
 
 # ---- dependencies --------------------------------------------------------------
 DEB_PKGS := gcc clang libclang-rt-14-dev make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
-            qemu-system-arm cppcheck clang-tidy
+            qemu-system-arm cppcheck clang-tidy \
+            python3-cffi python3-numpy python3-pytest python3-matplotlib python3-setuptools python3-dev
 deps:
 	@missing=""; \
 	for p in $(DEB_PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -499,3 +501,5 @@ deps:
 
 clean:
 	rm -rf $(B)
+
+include mk/python.mk

@@ -70,7 +70,10 @@ static inline mdr_status mdr_host_q31_raw(double v, double unit, int32_t *raw)
     s = v / unit * 536870912.0;
     s = s > 2147483647.0 ? 2147483647.0 : s < -2147483648.0 ? -2147483648.0 : s;
     *raw = (int32_t)(s < 0 ? -(long long)(0.5 - s) : (long long)(s + 0.5));
-    return *raw > MDR_Q30_ONE || *raw < -MDR_Q30_ONE ? MDR_E_OVERFLOW : MDR_OK;
+    if (*raw > MDR_Q30_ONE || *raw < -MDR_Q30_ONE) {
+        return MDR_E_OVERFLOW;
+    }
+    return MDR_OK;
 }
 
 /**
