@@ -10,9 +10,12 @@ checked against them when the extension is compiled:
     checks each field named here by taking its address as a pointer of the
     declared type (a field of another type is an incompatible-pointer or
     pointer-sign warning, made an error below; a missing field an error);
-  - typedefs and function prototypes are written a second time into the
-    source after the headers: a prototype or typedef that differs from the
-    header's is a "conflicting types" error of the C language.
+  - the source checks the rest after the headers (declarations()): the
+    typedefs again (a different one is a conflicting-types error), each
+    function's address assigned to a pointer of the declared type (missing:
+    an undeclared identifier; another type: an incompatible-pointer error),
+    each declared field's address likewise (this catches the signedness of
+    an integer field, which cffi itself takes from the cdef).
 
 So the package cannot drift from the library: a changed header fails the
 build. The per-arithmetic declarations are written once with {T} (float or
@@ -25,6 +28,7 @@ library's own flags by setup.py (LIB_SOURCES, LIB_CFLAGS) and linked into
 the extension.
 """
 import os
+import re
 
 import cffi
 
@@ -78,25 +82,21 @@ CONSTANTS = (
     + ["MDRPY_EV_" + c for c in ("A0", "D0", "F0", "A1", "D1", "F1", "N")]
 )
 
-# types cffi lays out (checked field by field)
-STRUCTS = """
-typedef struct { ...; } mdr_node_q31;
-typedef struct { ...; } mdrpy_engine;
-typedef struct {
-    double a, d, F, dissipated, last_cycle, a_max, L, D0, F0, Z0;
-    uint32_t cycles;
-    uint16_t springs;
-    uint8_t contact, flags;
-    ...;
-} mdrpy_info;
-"""
-STRUCTS_T = """
-typedef struct {{ ...; }} mdr_contact_{S};
-typedef struct {{ {T} a; {T} d; {T} F; uint16_t jumps; ...; }} mdr_critstate_{S};
-typedef struct {{ ...; }} mdr_node_{S};
-"""
+# structs: cffi lays them out ("...;"); the fields the package reads, each
+# (type, name), are checked by the compiler (CHECK below)
+STRUCTS = {
+    "mdr_node_q31": [],
+    "mdrpy_engine": [],
+    "mdrpy_info": [("double", f) for f in ("a", "d", "F", "dissipated", "last_cycle", "a_max", "L", "D0", "F0", "Z0")]
+    + [("uint32_t", "cycles"), ("uint16_t", "springs"), ("uint8_t", "contact"), ("uint8_t", "flags")],
+}
+STRUCTS_T = {
+    "mdr_contact_{S}": [],
+    "mdr_critstate_{S}": [("{T}", "a"), ("{T}", "d"), ("{T}", "F"), ("uint16_t", "jumps")],
+    "mdr_node_{S}": [],
+}
 
-# typedefs and prototypes: declared to cffi and written again into the source
+# typedefs and function prototypes of the package (valid C)
 DECLS = """
 typedef int8_t mdr_status;
 const char *mdr_status_str(mdr_status s);
@@ -138,20 +138,58 @@ mdr_status mdrpy_profile_{S}(const mdr_contact_{S} *c, size_t n, const double *x
 """
 ARITHS = (("float", "f32"), ("double", "f64"))
 
+_PROTO = re.compile(r"^(?P<ret>.*?[\s*])(?P<name>\w+)\s*\((?P<args>.*)\)$", re.S)
 
-def declarations():
-    """(cdef, check): the text cffi parses, and the typedefs and prototypes
-    of it that the source repeats after the headers."""
-    per = [(STRUCTS_T.format(T=t, S=s), DECLS_T.format(T=t, S=s)) for t, s in ARITHS]
-    structs = "".join(p[0] for p in per) + STRUCTS
-    decls = DECLS + "".join(p[1] for p in per)
-    consts = "".join("#define %s ...\n" % c for c in CONSTANTS)
-    return consts + structs + decls, decls
+
+def all_decls():
+    """The typedefs and prototypes, every arithmetic."""
+    return DECLS + "".join(DECLS_T.format(T=t, S=s) for t, s in ARITHS)
+
+
+def all_structs():
+    """{struct: [(type, field), ...]}, every arithmetic."""
+    structs = dict(STRUCTS)
+    for t, s in ARITHS:
+        structs.update({n.format(S=s): [(ty.format(T=t), f) for ty, f in fl] for n, fl in STRUCTS_T.items()})
+    return structs
+
+
+def declarations(decls=None, structs=None, constants=None):
+    """(cdef, check): the text cffi parses, and the C the extension's source
+    adds after the headers to check it: the typedefs again (a different one
+    is a conflicting-types error), every function's address assigned to a
+    pointer of the declared type (a missing function is an undeclared
+    identifier, a different type an incompatible-pointer error) and every
+    declared field's address to a pointer of its declared type (a missing
+    field is an error, another type an incompatible-pointer or pointer-sign
+    error). decls, structs, constants replace the package's (the build test
+    plants mismatches this way)."""
+    decls = all_decls() if decls is None else decls
+    structs = all_structs() if structs is None else structs
+    constants = CONSTANTS if constants is None else constants
+    cdef = "".join("#define %s ...\n" % c for c in constants)
+    cdef += "".join("typedef struct { %s...; } %s;\n" % ("".join("%s %s; " % tf for tf in fields), name)
+                    for name, fields in structs.items())
+    cdef += decls
+    typedefs, checks = [], []
+    for d in (x.strip() for x in decls.split(";")):
+        if d.startswith("typedef"):
+            typedefs.append(d + ";")
+        elif d:
+            m = _PROTO.match(d)
+            checks.append("    { %s(*mdr_fn)(%s) = &%s; (void)mdr_fn; }" % (m["ret"], m["args"], m["name"]))
+    for name, fields in structs.items():
+        checks += ["    { %s *p = (%s *)any; %s *mdr_fld = &p->%s; (void)mdr_fld; }" % (name, name, t, f)
+                   for t, f in fields]
+    check = "\n".join(typedefs) + (
+        "\n__attribute__((unused)) static void mdr_cffi_declarations_match(void *any)\n{\n%s\n}\n"
+        % "\n".join(checks))
+    return cdef, check
 
 
 def make_ffibuilder(cdef=None, check=None):
     """The FFI builder of the extension; cdef/check replace the package's
-    declarations (the build test plants mismatches this way)."""
+    declarations (see declarations())."""
     if cdef is None:
         cdef, check = declarations()
     ffi = cffi.FFI()
@@ -159,8 +197,7 @@ def make_ffibuilder(cdef=None, check=None):
     ffi.set_source(
         "mdr._mdr_cffi",
         '#include "mdr.h"\n#include "mdr_py.h"\n'
-        "/* the cdef's typedefs and prototypes again: a difference from the\n"
-        "   headers is a conflicting-types error */\n" + check,
+        "/* the cdef checked against the headers (python/mdr/_build.py, declarations()) */\n" + check,
         include_dirs=INCLUDE_DIRS,
         extra_compile_args=MODULE_CFLAGS,
     )

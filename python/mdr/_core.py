@@ -62,10 +62,18 @@ def check(code, where, **kw):
         raise Error(code, where, **kw)
 
 
-def arith_suffix(arith, allowed):
-    if arith not in allowed:
-        raise ValueError("arith must be one of %s, not %r" % (", ".join(map(repr, allowed)), arith))
-    return arith
+FLT_MAX = float(np.finfo(np.float32).max)
+
+
+def narrow(arith, where, **values):
+    """The values as floats; for f32 a finite value beyond float's range is
+    refused (MDR_E_OVERFLOW) instead of becoming inf on the way to C."""
+    out = [float(v) for v in values.values()]
+    if arith == "f32":
+        for (name, _), v in zip(values.items(), out):
+            if abs(v) > FLT_MAX and v - v == 0:
+                raise Error(lib.MDR_E_OVERFLOW, "%s: %s = %.9g (beyond float)" % (where, name, v), value=v)
+    return out
 
 
 def control_code(control, where):

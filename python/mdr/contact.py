@@ -5,7 +5,7 @@ positive; w is the work of adhesion (a paraboloid pulls off at -1.5 pi w R).
 """
 import numpy as np
 
-from ._core import Error, broadcast, check, control_code, dptr, element_error, ffi, lib, shaped, shaped_bool
+from ._core import Error, broadcast, check, control_code, dptr, element_error, ffi, lib, narrow, shaped, shaped_bool
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -97,10 +97,10 @@ class Contact:
                 "; unexpected " + ", ".join(extra) if extra else ""))
         self.profile = profile
         self.kind = kind
-        self.params = {n: float(params[n]) for n in names}
-        self.E = float(E)
-        self.w = float(w)
         self.arith = arith
+        vals = narrow(arith, "Contact(%r)" % profile, E=E, w=w, **{n: params[n] for n in names})
+        self.E, self.w = vals[:2]
+        self.params = dict(zip(names, vals[2:]))
         self._T = "float" if arith == "f32" else "double"
         self._f = {name: getattr(lib, "%s_%s" % (name, arith)) for name in (
             "mdr_contact_init", "mdr_critical", "mdr_default_start", "mdrpy_eq", "mdrpy_state",
@@ -186,9 +186,10 @@ class Contact:
         ctl = control_code(control, "critical")
         if a_start is None:
             a_start = self.default_start()
-        k = 0.0 if k_machine is None else float(k_machine)
+        k, a_start = narrow(self.arith, "critical", k_machine=0.0 if k_machine is None else k_machine,
+                            a_start=a_start)
         out = ffi.new("mdr_critstate_%s *" % self.arith)
-        check(self._f["mdr_critical"](self._c, ctl, k, float(a_start), out),
+        check(self._f["mdr_critical"](self._c, ctl, k, a_start, out),
               "critical(%r, k_machine=%s, a_start=%.9g)" % (control, k_machine, a_start))
         return Critical(a=float(out.a), d=float(out.d), F=float(out.F), jumps=int(out.jumps), control=control,
                         k_machine=k_machine, a_start=float(a_start))

@@ -182,6 +182,15 @@ class Engine:
         if self._x is not None:
             check(lib.mdrpy_engine_reset(self._x), "Engine.reset")
 
+    def _check_path(self, ctl, path, pp):
+        bad = ffi.new("size_t *")
+        st = lib.mdrpy_check_path(self._x if self._x is not None else ffi.NULL, ctl, pp, path.size, bad)
+        if st != lib.MDR_OK:
+            raise Error(st, "Engine.run: path[%d] = %.9g" % (bad[0], path[bad[0]]), index=int(bad[0]),
+                        value=float(path[bad[0]]),
+                        hint="q31 takes |value| <= 2 units of %(D0).3g m (d), %(F0).3g N (F), %(Z0).3g m (z)"
+                        % self.q31_units if st == lib.MDR_E_OVERFLOW and self.arith == "q31" else "")
+
     def run(self, path, *, control, steps_per_segment):
         """Drive the engine along the piecewise-linear path of the controlled
         variable: control "grips" (path of d [m]), "load" (F [N]) or
@@ -203,18 +212,13 @@ class Engine:
         steps = int(steps)
         pp = dptr(path)
         if self._x is None:
+            self._check_path(ctl, path, pp)  # finite, before the table extent is taken from it
             c = self.contact
             a_max = ffi.new("double *")
             check(lib.mdrpy_extent(self._arith, c.kind, list(c.p), self.E, self.w, ctl, self.k_machine, pp,
                                    path.size, a_max), "Engine.run: default a_max")
             self._build(a_max[0])
-        bad = ffi.new("size_t *")
-        st = lib.mdrpy_check_path(self._x, ctl, pp, path.size, bad)
-        if st != lib.MDR_OK:
-            raise Error(st, "Engine.run: path[%d] = %.9g" % (bad[0], path[bad[0]]), index=int(bad[0]),
-                        value=float(path[bad[0]]),
-                        hint="q31 takes |value| <= 2 units (%s)" % self.q31_units if st == lib.MDR_E_OVERFLOW
-                        and self.arith == "q31" else "")
+        self._check_path(ctl, path, pp)
         n = 1 + (path.size - 1) * steps
         z, d, F, a = (np.empty(n) for _ in range(4))
         event = np.empty(n, dtype=np.uint8)
@@ -252,7 +256,7 @@ class Engine:
             raise Error(st, "Engine.run: tick %d (%s = %.9g)" % (t0, {"grips": "d", "load": "F"}.get(control, "z"), v),
                         index=t0, value=v, partial=result,
                         hint="raise a_max (now %.9g m)" % self.a_max if st == lib.MDR_E_OUTSIDE else
-                        "a q31 output saturated" if st == lib.MDR_E_OVERFLOW and self.arith == "q31" else "")
+                        _SATURATED % self.q31_units if st == lib.MDR_E_OVERFLOW and self.arith == "q31" else "")
         return result
 
     def __repr__(self):
@@ -260,6 +264,10 @@ class Engine:
         return "<mdr.Engine %s on %s, %d springs, a_max %s, w_adv %.9g, k_machine %.9g>" % (
             self.arith, src, self.springs, "%.9g m" % self.a_max if self.a_max else "(at first run)",
             self.w_adv, self.k_machine)
+
+
+_SATURATED = ("a q31 output saturated: beyond 2 units of %(D0).3g m (d), %(F0).3g N (F), %(Z0).3g m (z); "
+              "a separated machine's d follows z: end the path nearer the surface, or use f64")
 
 
 def _path_value(path, steps, t):

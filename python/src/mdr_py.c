@@ -142,7 +142,7 @@ mdr_status mdrpy_check_path(const mdrpy_engine *x, uint8_t control, const double
                             size_t npath, size_t *bad)
 {
     size_t i;
-    if (x == NULL || path == NULL || bad == NULL) {
+    if (path == NULL || bad == NULL) {
         return MDR_E_NULL;
     }
     if (control != MDR_CONTROL_LOAD && control != MDR_CONTROL_GRIPS && control != MDR_CONTROL_MACHINE) {
@@ -153,6 +153,8 @@ mdr_status mdrpy_check_path(const mdrpy_engine *x, uint8_t control, const double
         mdr_status st = MDR_OK;
         if (!(v - v == 0.0)) {
             st = MDR_E_NONFINITE;
+        } else if (x == NULL) {
+            st = MDR_OK;
         } else if (x->arith == MDRPY_F32 && (v > (double)FLT_MAX || v < -(double)FLT_MAX)) {
             st = MDR_E_OVERFLOW;
         } else if (x->arith == MDRPY_Q31) {

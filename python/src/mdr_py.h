@@ -140,7 +140,7 @@ void mdrpy_engine_info(const mdrpy_engine *x, mdrpy_info *o);
 /**
  * @brief Check a path before running it: every value finite, and for q31
  *        inside the steps' documented input range (+-2 units of D0, F0 or
- *        Z0).
+ *        Z0). x NULL: finiteness only (before the engine is built).
  * @param[out] bad  index of the first refused value
  * @return MDR_OK, MDR_E_CONTROL (control not MDR_CONTROL_*), MDR_E_NONFINITE,
  *         MDR_E_OVERFLOW (f32: beyond float; q31: beyond the range)
