@@ -91,17 +91,21 @@ def test_every_status_is_known():
     it), and its text is the one of lib/src/mdr_status.c."""
     import mdr
 
-    header = open(os.path.join(ROOT, "lib", "include", "mdr_types.h")).read()
+    header = read("lib", "include", "mdr_types.h")
     names = set(re.findall(r"^#define (MDR_E_[A-Z_]+) ", header, re.M)) | {"MDR_OK"}
     assert names == set(_build.STATUS_NAMES)
     assert set(mdr._core.STATUS_NAMES.values()) == names
-    src = open(os.path.join(ROOT, "lib", "src", "mdr_status.c")).read()
+    src = read("lib", "src", "mdr_status.c")
     texts = dict(re.findall(r'case (MDR_[A-Z_]+): return "([^"]*)";', src))
     for name in names:
         assert mdr.status_text(getattr(mdr.lib, name)) == texts[name]
-    events = set(re.findall(r"^#define (MDR_EV_[A-Z_]+) ",
-                            open(os.path.join(ROOT, "lib", "include", "mdr_engine.h")).read(), re.M))
+    events = set(re.findall(r"^#define (MDR_EV_[A-Z_]+) ", read("lib", "include", "mdr_engine.h"), re.M))
     assert events == {"MDR_EV_" + e for e in _build.EVENT_NAMES}
+
+
+def read(*path):
+    with open(os.path.join(ROOT, *path)) as f:
+        return f.read()
 
 
 def make_var(makefile_args, var):
