@@ -16,6 +16,7 @@
 #   make fuzz       libFuzzer targets, FUZZ_TIME s each (fuzz-replay: the corpus)
 #   make tables     regenerate lib/src/math/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
+#   make python     the Python package in place (python-test, python-bench: mk/python.mk)
 #
 # CC, CFLAGS and CROSS_COMPILE given on the command line are respected;
 # the flags the library needs are kept apart in MDR_CFLAGS.

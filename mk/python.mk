@@ -6,7 +6,8 @@
 #   make python-test   the pytest suite python/tests (in make test); a run
 #                      that collects no test fails (pytest's exit status 5)
 #   make python-bench  python/bench.py: c.eq over 1e6 radii against a Python
-#                      loop of scalar calls, Engine.run against the C step
+#                      loop of scalar calls, Engine.run against the C step;
+#                      the tables go into README.md ("Python")
 #   make python-clean  remove the in-place extension (also by make clean)
 #
 # Always the system Python (Debian's python3-cffi, -numpy, -pytest,
@@ -28,7 +29,8 @@ python-test: $(PY_STAMP) $(B)/host/mdr
 	  if [ $$rc -eq 5 ]; then echo "python-test: pytest collected no tests"; exit 1; fi; exit $$rc
 
 python-bench: $(PY_STAMP)
-	cd python && $(PYTHON) bench.py
+	cd python && $(PYTHON) bench.py --readme ../README.md
+	@echo "python-bench: README.md's Python figures updated"
 
 python-clean:
 	rm -f python/mdr/_mdr_cffi*.so

@@ -82,7 +82,7 @@ def fd(run, x=None, ax=None, contact=None, length_unit="nm", force_unit="nN", la
         lo, hi = float(np.min(inside)), float(np.max(inside))
         ax.set_xlim(lo - 0.25 * (hi - lo), hi + 0.1 * (hi - lo))
     if events:
-        seen = set()
+        seen = set(ax.get_legend_handles_labels()[1])  # each kind once in the legend
         for ev in run.events:
             marker, colour = _STYLE.get(ev.kind, ("s", "k"))
             x0, x1 = xof(ev.d0, ev.F0), xof(ev.d1, ev.F1)
@@ -93,7 +93,7 @@ def fd(run, x=None, ax=None, contact=None, length_unit="nm", force_unit="nN", la
             seen.add(ev.kind)
             if ev.kind == "pull-off":
                 ax.annotate("pull-off\n%.4g %s" % (ev.F0 / fu, _LABEL.get(force_unit, force_unit)),
-                            (x0, ev.F0 / fu), textcoords="offset points", xytext=(8, -4), va="top", fontsize=8,
+                            (x0, ev.F0 / fu), textcoords="offset points", xytext=(8, 2), va="center", fontsize=8,
                             color=colour)
     ax.axhline(0, color="0.8", lw=0.6, zorder=0)
     ax.set_xlabel("%s [%s]" % ("base position z" if x == "z" else "indentation d", _LABEL.get(length_unit, length_unit)))
