@@ -9,13 +9,16 @@ Tolerances:
       with 17 (round-trips a double): every tick, event and the dissipated
       energy must be equal.
   JKR pull-off through the engine (paraboloid tables hold g exactly),
-      relative to -1.5 pi w R resp. -5/6 pi w R, and Kendall's; the worst
+      relative to -1.5 pi w R resp. -5/6 pi w R, Kendall's and the machine's
+      fold (force and base position, bisection on the closed forms); the worst
       measured in brackets (pytest -s prints them): ENG64 = 2e-14 [1.8e-15],
-      ENG32 = 2e-6 [2.2e-7], ENGQ31 = 3e-6 [7.7e-7] (q31: a few LSB of its
+      ENG32 = 2e-6 [1.3e-6], ENGQ31 = 3e-6 [7.7e-7] (q31: a few LSB of its
       force unit F0, README "Fixed point").
   dissipated energy against the loop area int F dd of the run's own ticks
       (trapezoids, fixed grips, 4000 ticks a segment, the jump split at its
       states): LOOP = 1e-8 relative [1.3e-9; O(h^2) in the tick spacing].
+  z = d + F/k_machine on every tick: floats ZREL = 4 ulp [1.1]; q31 ZQ31 =
+      2 x the summed LSB of the three terms [0.2].
 """
 import json
 import math
@@ -199,6 +202,22 @@ def test_jkr_pull_off_through_engine(arith):
                              ("grips", [0, 0.5e-6, -0.6e-6], -5 / 6 * math.pi * w * R)):
         run = mdr.Engine(c, springs=128, w_adv=w, arith=arith).run(path, control=control, steps_per_segment=2000)
         assert within(abs(run.pull_off.F0 / F - 1), ENG[arith], "ENG" + arith), (control, run.pull_off)
+    # a machine of stiffness k: the fold of z = d + F/k (bisection on the closed forms)
+    k = 0.5
+    def dz_da(a):
+        dl = math.sqrt(2 * math.pi * a * w / E)
+        return 2 * a / R - dl / (2 * a) + 2 * E * (2 * a**2 / R - 1.5 * dl) / k
+    lo, hi = (math.pi * w * R**2 / (8 * E)) ** (1 / 3), (9 * math.pi * w * R**2 / (8 * E)) ** (1 / 3)
+    for _ in range(200):
+        lo, hi = ((lo + hi) / 2, hi) if dz_da((lo + hi) / 2) < 0 else (lo, (lo + hi) / 2)
+    a = (lo + hi) / 2
+    d = a**2 / R - math.sqrt(2 * math.pi * a * w / E)
+    F = 2 * E * (a * d - a**3 / (3 * R))
+    run = mdr.Engine(c, springs=128, w_adv=w, k_machine=k, arith=arith).run([0, 2e-6, -12e-6], control="machine",
+                                                                           steps_per_segment=4000)
+    po = run.pull_off
+    assert within(abs(po.F0 / F - 1), ENG[arith], "ENG" + arith), po
+    assert within(abs((po.d0 + po.F0 / k) / (d + F / k) - 1), ENG[arith], "ENG" + arith), po
     a0 = 1e-6
     run = mdr.Engine(mdr.Contact("flatpunch", E=E, w=w, a0=a0), springs=64, arith=arith).run(
         [0, 1e-7, -1e-6], control="grips", steps_per_segment=1000)
@@ -241,10 +260,32 @@ def test_runs_continue_and_reset(arith):
         assert np.array_equal(np.concatenate([getattr(r1, k), getattr(r2, k)[1:]]), getattr(one, k))
     assert r1.dissipated + r2.dissipated == pytest.approx(one.dissipated, rel=1e-12, abs=0)
     assert eng.cycles == one.cycles == 1 and eng.dissipated == pytest.approx(one.dissipated, rel=1e-12)
+    assert eng.state == (r2.a[-1], r2.d[-1], r2.F[-1], r2.a[-1] > 0)
     eng.reset()
     assert eng.state == (0.0, 0.0, 0.0, False) and eng.cycles == 0 and eng.dissipated == 0
     again = eng.run(p1, control="machine", steps_per_segment=300)
     assert all(np.array_equal(getattr(again, k), getattr(r1, k)) for k in ("z", "d", "F", "a"))
+
+
+@pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
+def test_machine_base_position(arith):
+    """z = d + F/k_machine on every tick, in contact or not (q31: within
+    ZQ31 = 2 x the sum of the three terms' LSB, 2^-29 of Z0, D0 and F0/k
+    [measured 0.2]; floats: ZREL = 4 ulp of the larger term [measured 1.1])."""
+    c = mdr.Contact("sphere", E=1e9, w=0.05, R=20e-9)
+    k = 0.2
+    eng = mdr.Engine(c, springs=1024, w_adv=0.02, k_machine=k, arith=arith)
+    run = eng.run([-5e-9, 3e-9, -40e-9], control="machine", steps_per_segment=2000)
+    assert run.pull_off is not None
+    err = np.abs(run.z - (run.d + run.F / k))
+    if arith == "q31":
+        u = eng.q31_units
+        lsb = 2.0**-29 * np.array([u["Z0"], u["D0"], u["F0"] / k])
+        assert within(float(np.max(err) / np.sum(lsb)), 2, "ZQ31")
+    else:
+        eps = np.finfo(np.float32 if arith == "f32" else np.float64).eps
+        scale = np.maximum(np.abs(run.d), np.abs(run.F / k))
+        assert within(float(np.max(err / (scale + 1e-300)) / eps), 4, "ZREL")
 
 
 def test_refused_tick_keeps_the_engine():
