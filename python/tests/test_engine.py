@@ -253,6 +253,7 @@ def test_runs_continue_and_reset(arith):
     p1, p2 = [0, 1e-6, -2e-6], [-2e-6, 1e-6, -20e-6]
     eng = mdr.Engine(c, springs=512, w_adv=0.02, k_machine=0.2, arith=arith, a_max=12e-6)
     r1 = eng.run(p1, control="machine", steps_per_segment=300)
+    assert r1.F[-1] < 0 and eng.state == (r1.a[-1], r1.d[-1], r1.F[-1], True)  # in contact, adhesive
     r2 = eng.run(p2, control="machine", steps_per_segment=300)
     one = mdr.Engine(c, springs=512, w_adv=0.02, k_machine=0.2, arith=arith, a_max=12e-6).run(
         p1 + p2[1:], control="machine", steps_per_segment=300)
