@@ -20,7 +20,7 @@ from .engine import Engine, Event, Run
 
 __version__ = "%d.%d" % (lib.MDR_VERSION_MAJOR, lib.MDR_VERSION_MINOR)
 __all__ = ["Contact", "Engine", "Error", "Run", "Event", "EqState", "State", "Critical", "Profile", "PROFILES",
-           "plot", "status_text", "event_name"]
+           "plot", "status_text", "event_name", "ffi", "lib"]  # ffi, lib: the extension itself
 
 
 def __getattr__(name):

@@ -64,6 +64,8 @@ class Engine:
     does (1.25 x the radius where the equilibrium curve reaches the path's
     largest value), so errors of the table or of the engine's parameters
     appear there. A sampled tip: Engine.from_tip(r, f, E=..., w=...).
+    An Engine holds state: run it from one thread at a time (the C loop
+    runs without the GIL); Contacts are read-only and may be shared.
     """
 
     def __init__(self, contact, *, springs=1024, w_adv=0.0, k_machine=0.0, arith="f64", a_max=None):

@@ -3,7 +3,7 @@ literature values of /work/shared/CHECK_VALUES.md, and vectorised calls
 against scalar calls.
 
 Tolerances, relative (depths relative to max(|d|, dl)); the worst error
-measured by this file in brackets (pytest -s prints them):
+measured by this file in brackets (printed at the end of the run):
   REL64 = 3e-14     f64 critical states: JKR load/grips/machine, Kendall,
                     power laws [2.7e-15]
   LIT64 = 1e-11     f64 against CHECK_VALUES, given to 12 digits [3.2e-12]
@@ -27,6 +27,7 @@ import numpy as np
 import pytest
 
 import mdr
+from conftest import Worst
 
 REL64, REL32, LIT64 = 3e-14, 2e-6, 1e-11
 CURVE64, CURVE32 = 3e-14, 2e-6
@@ -40,18 +41,7 @@ MATERIALS = [(1e6, 0.05, 10e-6), (2.667e6, 0.045, 20e-9), (1e9, 0.1, 5e-9), (1.1
              (1e5, 0.02, 2e-3), (1e7, 0.5, 1e-4)]
 
 
-WORST = {}  # tolerance -> worst error measured (printed with pytest -s)
-
-
-def within(err, tol):
-    WORST[tol] = max(WORST.get(tol, 0.0), err)
-    return err < tol
-
-
-@pytest.fixture(scope="module", autouse=True)
-def _report():
-    yield
-    print("\ntest_contact worst errors: " + ", ".join("%.3g: %.2g" % kv for kv in sorted(WORST.items())))
+within = Worst("test_contact")  # tolerance -> worst error (printed at the end of the run)
 
 
 def rel(x, want, scale=None):

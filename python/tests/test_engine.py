@@ -11,7 +11,7 @@ Tolerances:
   JKR pull-off through the engine (paraboloid tables hold g exactly),
       relative to -1.5 pi w R resp. -5/6 pi w R, Kendall's and the machine's
       fold (force and base position, bisection on the closed forms); the worst
-      measured in brackets (pytest -s prints them): ENG64 = 2e-14 [1.8e-15],
+      measured in brackets (printed at the end of the run): ENG64 = 2e-14 [1.8e-15],
       ENG32 = 2e-6 [1.3e-6], ENGQ31 = 3e-6 [7.7e-7] (q31: a few LSB of its
       force unit F0, README "Fixed point").
   dissipated energy against the loop area int F dd of the run's own ticks
@@ -28,22 +28,12 @@ import numpy as np
 import pytest
 
 import mdr
+from conftest import Worst
 
 ENG64, ENG32, ENGQ31 = 2e-14, 2e-6, 3e-6
 ENG = {"f64": ENG64, "f32": ENG32, "q31": ENGQ31}
 LOOP = 1e-8
-WORST = {}  # tolerance name -> worst error measured (printed with pytest -s)
-
-
-def within(err, tol, name):
-    WORST[name] = max(WORST.get(name, 0.0), err)
-    return err < tol
-
-
-@pytest.fixture(scope="module", autouse=True)
-def _report():
-    yield
-    print("\ntest_engine worst errors: " + ", ".join("%s: %.2g" % kv for kv in sorted(WORST.items())))
+within = Worst("test_engine")  # tolerance name -> worst error (printed at the end of the run)
 
 
 def run_cli(cli, args):
