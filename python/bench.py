@@ -43,7 +43,7 @@ def bench_eq():
     print("## c.eq: one call over 1e6 radii against a Python loop of scalar calls\n")
     print("| profile | arith | vector, ns/radius | scalar call, ns | scalar / vector |")
     print("| --- | --- | --- | --- | --- |")
-    worst = None
+    rows = []
     for profile, params in (("paraboloid", dict(R=10e-6)), ("sphere", dict(R=10e-6)),
                             ("wavy", dict(R=10e-6, h=1e-8, lam=5e-7))):
         for arith in ("f64", "f32"):
@@ -56,10 +56,12 @@ def bench_eq():
                 for v in sub:
                     c.eq(v)
             ts = best(loop, repeat=3) / len(sub)
-            r = ts / tv
-            worst = r if worst is None else min(worst, r)
-            print("| %s | %s | %.1f | %.0f | %.0f |" % (profile, arith, tv * 1e9, ts * 1e9, r))
-    print("\nsmallest ratio: %.0fx (goal >= 50x: %s)\n" % (worst, "met" if worst >= 50 else "NOT MET"))
+            rows.append((profile, arith, tv, ts / tv))
+            print("| %s | %s | %.1f | %.0f | %.0f |" % (profile, arith, tv * 1e9, ts * 1e9, ts / tv))
+    short = [r for r in rows if r[3] < 50]
+    print("\ngoal >= 50x: met for %d of %d%s\n" % (len(rows) - len(short), len(rows), "".join(
+        "; NOT MET for %s %s (%.0fx): its kernel alone takes %.0f ns a radius, so a scalar call's Python "
+        "overhead cannot be 50x of it" % (p, a, r, tv * 1e9) for p, a, tv, r in short)))
 
 
 def bench_run():
@@ -117,6 +119,6 @@ if __name__ == "__main__":
         i, j = text.index(begin) + len(begin), text.index(end)
         with open(sys.argv[2], "w") as f:
             md = "\n".join("**%s**" % ln[3:] if ln.startswith("## ") else ln for ln in buf.getvalue().splitlines())
-            f.write(text[:i] + "\n" + md + "\n\n" + text[j:])
+            f.write(text[:i] + "\n" + md.strip() + "\n\n" + text[j:])
     else:
         main()
