@@ -13,22 +13,18 @@
 # Always the system Python (Debian's python3-cffi, -numpy, -pytest,
 # -matplotlib, -setuptools, -dev), never a python3 found first on PATH.
 PYTHON := /usr/bin/python3
-PY_STAMP := $(B)/python/built.stamp
-PY_SRC := python/setup.py python/mdr/_build.py $(wildcard python/src/*.c python/src/*.h python/src/*.inc) \
-          examples/mdr_host.h examples/mdr_host_t.h
 
+# setup.py rebuilds the extension when a source or header is newer than it
+# (python/setup.py, DEPENDS) and says so otherwise
 .PHONY: python python-test python-bench python-clean
-$(PY_STAMP): $(PY_SRC) $(LIB_SRC) $(LIB_DEPS)
-	@mkdir -p $(@D)
+python:
 	cd python && $(PYTHON) setup.py -q build_ext --inplace --build-temp ../$(B)/python
-	@touch $@
-python: $(PY_STAMP)
 
-python-test: $(PY_STAMP) $(B)/host/mdr
+python-test: python $(B)/host/mdr
 	@cd python && MDR_CLI=$(CURDIR)/$(B)/host/mdr MPLBACKEND=Agg $(PYTHON) -m pytest -q -W error tests; rc=$$?; \
 	  if [ $$rc -eq 5 ]; then echo "python-test: pytest collected no tests"; exit 1; fi; exit $$rc
 
-python-bench: $(PY_STAMP)
+python-bench: python
 	cd python && $(PYTHON) bench.py --readme ../README.md
 	@echo "python-bench: README.md's Python figures updated"
 
