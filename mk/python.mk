@@ -8,7 +8,7 @@
 #   make python-bench  python/bench.py: c.eq over 1e6 radii against a Python
 #                      loop of scalar calls, Engine.run against the C step;
 #                      the tables go into README.md ("Python")
-#   make python-clean  remove the in-place extension (also by make clean)
+#   make python-clean  remove the extension and its build (also by make clean)
 #
 # Always the system Python (Debian's python3-cffi, -numpy, -pytest,
 # -matplotlib, -setuptools, -dev), never a python3 found first on PATH.
@@ -18,7 +18,7 @@ PYTHON := /usr/bin/python3
 # (python/setup.py, DEPENDS) and says so otherwise
 .PHONY: python python-test python-bench python-clean
 python:
-	cd python && $(PYTHON) setup.py -q build_ext --inplace --build-temp ../$(B)/python
+	cd python && $(PYTHON) setup.py -q build_ext --inplace --build-temp ../$(B)/python --build-lib ../$(B)/python/lib
 
 python-test: python $(B)/host/mdr
 	@cd python && MDR_CLI=$(CURDIR)/$(B)/host/mdr MPLBACKEND=Agg $(PYTHON) -m pytest -q -W error tests; rc=$$?; \
@@ -29,7 +29,7 @@ python-bench: python
 	@echo "python-bench: README.md's Python figures updated"
 
 python-clean:
-	rm -f python/mdr/_mdr_cffi*.so
+	rm -rf python/mdr/_mdr_cffi*.so $(B)/python
 clean: python-clean
 
 # lint: the package's C (python/src) like the CLI's, clang-tidy and cppcheck
