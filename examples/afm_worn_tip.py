@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Pull-off of a worn AFM tip, from its sampled profile, through the spring
 engine: an approach-retract cycle of a cantilever, plotted.
 

@@ -118,7 +118,8 @@ class Contact:
         return "mdr.Contact(%r, %s, arith=%r)" % (self.profile, self._args(), self.arith)
 
     def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None):
-        """Call the C loop name over the broadcast inputs; (shape, out, flags)."""
+        """Call the C loop name over the broadcast inputs; (shape, out, flags,
+        the flat inputs)."""
         shape, flat = broadcast(*inputs)
         n = flat[0].size
         out = np.empty((ncols, n))
@@ -127,9 +128,7 @@ class Contact:
         args = [dptr(a) for a in flat]
         if nullable is not None:  # an optional input given as NULL
             args.insert(nullable, ffi.NULL)
-        if name == "mdrpy_stress":
-            st = self._f[name](self._c, n, *args, dptr(out[0]), fail)
-        elif nflags:
+        if nflags:
             st = self._f[name](self._c, n, *args, dptr(out), ffi.from_buffer("uint8_t[]", flags), fail)
         else:
             st = self._f[name](self._c, n, *args, dptr(out), fail)

@@ -247,7 +247,7 @@ class Engine:
         k = ev_n[0]
         cols = [lib.MDRPY_EV_A0, lib.MDRPY_EV_D0, lib.MDRPY_EV_F0, lib.MDRPY_EV_A1, lib.MDRPY_EV_D1, lib.MDRPY_EV_F1]
         events = [Event(event_name(ev_code[i, 0]), int(ev_step[i]), *map(float, ev_val[i, cols]),
-                        jumps=int(ev_code[i, 1])) for i in range(k)]
+                        jumps=int(ev_code[i, 1])) for i in range(k) if ev_step[i] < t0]  # (q31: not the saturated tick's)
         after = self._info()
         result = Run(z=z[:t0], d=d[:t0], F=F[:t0], a=a[:t0], event=event[:t0], events=events,
                      dissipated=after.dissipated - before.dissipated, cycles=after.cycles - before.cycles,
