@@ -19,6 +19,7 @@
 #                   one per module, in make test)
 #   make tables     regenerate lib/src/math/mdr_tables.h (quadrature nodes)
 #   make deps       install missing Debian packages (as root) or name them
+#   make python     the Python package in place (python-test, python-bench: mk/python.mk)
 #
 # CC, CFLAGS and CROSS_COMPILE given on the command line are respected;
 # the flags the library needs are kept apart in MDR_CFLAGS.
@@ -54,7 +55,7 @@ $(B)/host/%.o: lib/src/%.c $(LIB_DEPS)
 $(B)/host/libmdr.a: $(B)/host/mdr_f32.o $(B)/host/mdr_f64.o $(B)/host/mdr_q31.o $(B)/host/mdr_status.o
 	$(CROSS_COMPILE)ar rcs $@ $^
 
-$(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h examples/tip_csv.h $(B)/host/libmdr.a
+$(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h examples/mdr_host.h examples/mdr_host_t.h examples/tip_csv.h $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
 
 $(B)/host/afm_demo: examples/afm_demo.c $(B)/host/libmdr.a
@@ -193,7 +194,8 @@ test: deps
 	$(MAKE) --no-print-directory mutate-quick
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
-	@echo "suites: $(words $(TESTS) cli lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	$(MAKE) --no-print-directory python-test
+	@echo "suites: $(words $(TESTS) cli python lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 # The q31 step is integer arithmetic: the same inputs must give the same
 # outputs whatever the compiler and optimisation level (a difference means
@@ -507,7 +509,8 @@ lint: $(B)/lint/cppcheck.stamp $(foreach u,$(LINT_UNITS),$(call lint_stamp,$(u))
 
 # ---- dependencies --------------------------------------------------------------
 DEB_PKGS := gcc clang libclang-rt-14-dev make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
-            qemu-system-arm cppcheck clang-tidy
+            qemu-system-arm cppcheck clang-tidy \
+            python3-cffi python3-numpy python3-pytest python3-matplotlib python3-setuptools python3-dev
 deps:
 	@missing=""; \
 	for p in $(DEB_PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -520,3 +523,5 @@ deps:
 
 clean:
 	rm -rf $(B)
+
+include mk/python.mk

@@ -45,6 +45,7 @@
 #include <string.h>
 
 #include "mdr.h"
+#include "mdr_host.h"
 #include "tip_csv.h"
 
 enum { CMD_EQ, CMD_CRITICAL, CMD_CURVE, CMD_STRESS, CMD_CYCLE, CMD_TABLE };
@@ -153,41 +154,15 @@ static long read_table(const char *file, double **r, double **f)
     return n;
 }
 
-/* --arith q31: the fixed-point engine, its table and the SI units of its
- * Q formats (double, from L + L_lo, D0 and 2 E* L D0). */
-typedef struct {
-    mdr_table_q31 t;
-    mdr_engine_q31 e;
-    mdr_node_q31 *nodes;
-    double L, D0, F0, Z0;
-} cli_q31;
-
-/* SI value -> raw Q2.29 of unit, rounded and clamped to the int32 range (the
- * engine saturates beyond +-2 units and sets MDR_FLAG_SAT) */
-static int32_t q31_raw(double v, double unit)
-{
-    double s = v / unit * 536870912.0;
-    s = s > 2147483647.0 ? 2147483647.0 : s < -2147483648.0 ? -2147483648.0 : s;
-    return (int32_t)(s < 0 ? -(long long)(0.5 - s) : (long long)(s + 0.5));
-}
-
-static mdr_status q31_step(cli_q31 *q, uint8_t control, double v, mdr_step_q31 *o)
-{
-    if (control == MDR_CONTROL_GRIPS) {
-        return mdr_engine_step_d_q31(&q->e, q31_raw(v, q->D0), o);
-    }
-    if (control == MDR_CONTROL_LOAD) {
-        return mdr_engine_step_F_q31(&q->e, q31_raw(v, q->F0), o);
-    }
-    return mdr_engine_step_z_q31(&q->e, q31_raw(v, q->Z0), o);
-}
-
 #define CLI_T float
 #define CLI_SFX(name) name##_f32
 #define CLI_NAME "f32"
 #define CLI_LIT "f"
 #define CLI_FMT "%.9g"
 #define CLI_EFMT "%.8e"
+#define HOST_T CLI_T
+#define HOST_SFX CLI_SFX
+#include "mdr_host_t.h"
 #include "mdr_cli_t.h"
 #undef CLI_T
 #undef CLI_SFX
@@ -201,6 +176,7 @@ static mdr_status q31_step(cli_q31 *q, uint8_t control, double v, mdr_step_q31 *
 #define CLI_LIT ""
 #define CLI_FMT "%.17g"
 #define CLI_EFMT "%.16e"
+#include "mdr_host_t.h"
 #include "mdr_cli_t.h"
 
 /* profile name -> kind and the flags of its parameters */

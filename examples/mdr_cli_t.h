@@ -4,56 +4,12 @@
  * "%.17g") defined. Returns the process exit status.
  */
 
-/* Controlled variable on the equilibrium curve (retraction work w). */
-static CLI_T CLI_SFX(ctl_of)(const struct cli_args *A, const CLI_SFX(mdr_eqstate) *e)
-{
-    if (A->control == MDR_CONTROL_LOAD) {
-        return e->F;
-    }
-    if (A->control == MDR_CONTROL_GRIPS) {
-        return e->d;
-    }
-    return e->d + e->F / (CLI_T)A->k_m;
-}
-
-/* Default table extent for a cycle: 1.25 x the radius where the equilibrium
- * curve (work w, the widest of every approach branch) reaches the path's
- * largest value, found by doubling from mdr_default_start(); capped by the
- * profile's domain (flat punch: a0, sphere: 0.999 R). */
+/* Default table extent for a cycle (mdr_host_extent(), mdr_host_t.h). */
 static int CLI_SFX(default_extent)(const struct cli_args *A, const CLI_SFX(mdr_contact) *c,
                                    CLI_T *a_max)
 {
-    CLI_T a, cap = (CLI_T)1e30, umax = (CLI_T)A->path[0];
-    long i;
-    mdr_status st;
-    for (i = 1; i < A->npath; i++) {
-        umax = (CLI_T)A->path[i] > umax ? (CLI_T)A->path[i] : umax;
-    }
-    if (A->kind == MDR_PROFILE_FLATPUNCH) {
-        *a_max = c->p[0];
-        return 0;
-    }
-    if (A->kind == MDR_PROFILE_SPHERE) {
-        cap = (CLI_T)0.999 * c->p[0];
-    }
-    st = CLI_SFX(mdr_default_start)(c, &a);
-    if (st != MDR_OK) {
-        return cli_fail("default --a-max", st);
-    }
-    for (i = 0; i < 200 && a < cap; i++) {
-        CLI_SFX(mdr_eqstate) e;
-        st = CLI_SFX(mdr_eq)(c, a, &e);
-        if (st != MDR_OK) {
-            return cli_fail("default --a-max", st);
-        }
-        if (CLI_SFX(ctl_of)(A, &e) >= umax) {
-            break;
-        }
-        a *= 2;
-    }
-    a *= (CLI_T)1.25;
-    *a_max = a < cap ? a : cap;
-    return 0;
+    mdr_status st = CLI_SFX(mdr_host_extent)(c, A->control, A->k_m, A->path, A->npath, a_max);
+    return st == MDR_OK ? 0 : cli_fail("default --a-max", st);
 }
 
 /* The spring table of the scene into malloc'd nodes (freed by the caller). */
@@ -167,8 +123,10 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     CLI_SFX(mdr_table) tab;
     CLI_SFX(mdr_node) *nodes = NULL;
     CLI_SFX(mdr_engine) eng;
-    CLI_SFX(mdr_step) o, po;
-    cli_q31 Q;
+    CLI_SFX(mdr_step) o;
+    mdr_step_f64 r, po; /* the step of any arithmetic, in double (exact) */
+    mdr_host_q31 Q;
+    mdr_node_q31 *qnodes = NULL;
     long seg, j, step = 0, events = 0, jumps = 0, have_po = 0;
     int rc = CLI_SFX(make_table)(A, &tab, &nodes);
     mdr_status st;
@@ -179,30 +137,26 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         free(nodes);
         return rc;
     }
-    Q.nodes = NULL;
     if (A->q31) {
-        Q.nodes = malloc(MDR_TABLE_NODES(tab.n) * sizeof *Q.nodes);
+        qnodes = malloc(MDR_TABLE_NODES(tab.n) * sizeof *qnodes);
         st = MDR_E_SIZE;
-        if (Q.nodes != NULL) {
-            st = CLI_SFX(mdr_table_q31_from)(&Q.t, Q.nodes, &tab);
+        if (qnodes != NULL) {
+            st = CLI_SFX(mdr_table_q31_from)(&Q.t, qnodes, &tab);
         }
         if (st != MDR_OK) {
-            free(Q.nodes);
+            free(qnodes);
             free(nodes);
             return cli_fail("q31 table (--springs must be a power of two)", st);
         }
         st = CLI_SFX(mdr_engine_init_q31)(&Q.e, &Q.t, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv,
                                           (CLI_T)A->k_m);
-        Q.L = (double)Q.t.L + (double)Q.t.L_lo;
-        Q.D0 = (double)Q.e.D0;
-        Q.F0 = 2.0 * A->E * Q.L * Q.D0;
-        Q.Z0 = (double)Q.e.Z0;
+        mdr_host_q31_units(&Q, A->E);
     } else {
         st = CLI_SFX(mdr_engine_init)(&eng, &tab, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv,
                                       (CLI_T)A->k_m);
     }
     if (st != MDR_OK) {
-        free(Q.nodes);
+        free(qnodes);
         free(nodes);
         return cli_fail("engine (--E, --w, --w-adv, --k-machine)", st);
     }
@@ -210,32 +164,21 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     printf("step,z,d,F,a,event\n");
     for (seg = 0; seg + 1 < A->npath && rc == 0; seg++) {
         for (j = seg == 0 ? 0 : 1; j <= A->steps; j++) {
-            double v = A->path[seg] + (A->path[seg + 1] - A->path[seg]) * (double)j / (double)A->steps;
+            double v = mdr_host_path_value(A->path, A->steps, seg, j);
             if (A->q31) {
-                mdr_step_q31 oq;
-                st = q31_step(&Q, A->control, v, &oq);
-                if (st == MDR_OK) {
-                    const double ua = Q.L / 1073741824.0, ud = Q.D0 / 536870912.0;
-                    const double uF = Q.F0 / 536870912.0, uz = Q.Z0 / 536870912.0;
-                    o.z = (CLI_T)(oq.z * (Q.e.machine ? uz : ud));
-                    o.d = (CLI_T)(oq.d * ud);
-                    o.F = (CLI_T)(oq.F * uF);
-                    o.a = (CLI_T)(oq.a * ua);
-                    o.a0 = (CLI_T)(oq.a0 * ua);
-                    o.d0 = (CLI_T)(oq.d0 * ud);
-                    o.F0 = (CLI_T)(oq.F0 * uF);
-                    o.a1 = (CLI_T)(oq.a1 * ua);
-                    o.d1 = (CLI_T)(oq.d1 * ud);
-                    o.F1 = (CLI_T)(oq.F1 * uF);
-                    o.event = oq.event;
-                    o.jumps = oq.jumps;
-                }
-            } else if (A->control == MDR_CONTROL_GRIPS) {
-                st = CLI_SFX(mdr_engine_step_d)(&eng, (CLI_T)v, &o);
-            } else if (A->control == MDR_CONTROL_LOAD) {
-                st = CLI_SFX(mdr_engine_step_F)(&eng, (CLI_T)v, &o);
+                /* out-of-range values are stepped (saturated, flagged, reported below) */
+                st = mdr_host_q31_step(&Q, A->control, v, 0, &r);
             } else {
-                st = CLI_SFX(mdr_engine_step_z)(&eng, (CLI_T)v, &o);
+                if (A->control == MDR_CONTROL_GRIPS) {
+                    st = CLI_SFX(mdr_engine_step_d)(&eng, (CLI_T)v, &o);
+                } else if (A->control == MDR_CONTROL_LOAD) {
+                    st = CLI_SFX(mdr_engine_step_F)(&eng, (CLI_T)v, &o);
+                } else {
+                    st = CLI_SFX(mdr_engine_step_z)(&eng, (CLI_T)v, &o);
+                }
+                if (st == MDR_OK) {
+                    CLI_SFX(mdr_host_widen)(&o, &r);
+                }
             }
             if (st != MDR_OK) {
                 fprintf(stderr, "mdr: step %ld (value %.9g): %s (status %d)%s\n", step, v,
@@ -244,23 +187,23 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
                 rc = 1;
                 break;
             }
-            printf("%ld," CLI_FMT "," CLI_FMT "," CLI_FMT "," CLI_FMT ",%s\n", step, (double)o.z,
-                   (double)o.d, (double)o.F, (double)o.a, mdr_event_str(o.event));
-            if (o.event != MDR_EV_NONE) {
+            printf("%ld," CLI_FMT "," CLI_FMT "," CLI_FMT "," CLI_FMT ",%s\n", step, r.z, r.d, r.F,
+                   r.a, mdr_event_str(r.event));
+            if (r.event != MDR_EV_NONE) {
                 char buf[512];
                 int len = snprintf(buf, sizeof buf,
                                    "%s{\"step\": %ld, \"event\": \"%s\", \"jumps\": %u, "
                                    "\"a0\": " CLI_FMT ", \"d0\": " CLI_FMT ", \"F0\": " CLI_FMT
                                    ", \"a1\": " CLI_FMT ", \"d1\": " CLI_FMT ", \"F1\": " CLI_FMT "}",
-                                   events ? ", " : "", step, mdr_event_str(o.event),
-                                   (unsigned)o.jumps, (double)o.a0, (double)o.d0, (double)o.F0,
-                                   (double)o.a1, (double)o.d1, (double)o.F1);
+                                   events ? ", " : "", step, mdr_event_str(r.event),
+                                   (unsigned)r.jumps, r.a0, r.d0, r.F0, r.a1, r.d1, r.F1);
                 if (len > 0 && llen + (size_t)len + 1 > lcap) {
                     char *nl;
                     lcap = 2 * (llen + (size_t)len + 1);
                     nl = realloc(list, lcap);
                     if (nl == NULL) {
                         free(list);
+                        free(qnodes);
                         free(nodes);
                         return cli_fail("event list", MDR_E_SIZE);
                     }
@@ -271,9 +214,9 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
                     llen += (size_t)len;
                 }
                 events++;
-                jumps += o.jumps;
-                if (o.event == MDR_EV_PULL_OFF) {
-                    po = o;
+                jumps += r.jumps;
+                if (r.event == MDR_EV_PULL_OFF) {
+                    po = r;
                     have_po = 1;
                 }
             }
@@ -281,15 +224,13 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         }
     }
     /* energy: Q15.48 of W0 = F0 D0 for q31 */
-    dissipated = A->q31 ? (double)Q.e.dissipated * (Q.F0 * Q.D0 / 281474976710656.0)
-                        : (double)eng.dissipated;
+    dissipated = A->q31 ? mdr_host_q31_energy(&Q, Q.e.dissipated) : (double)eng.dissipated;
     if (A->q31 && (Q.e.flags & MDR_FLAG_SAT)) {
         fprintf(stderr, "mdr: q31 inputs or results saturated (beyond +-2 units: D0 = %.9g m, "
                         "F0 = %.9g N)\n", Q.D0, Q.F0);
     }
     if (have_po) {
-        fprintf(stderr, "{\"pull_off_F\": " CLI_FMT ", \"pull_off_d\": " CLI_FMT, (double)po.F0,
-                (double)po.d0);
+        fprintf(stderr, "{\"pull_off_F\": " CLI_FMT ", \"pull_off_d\": " CLI_FMT, po.F0, po.d0);
     } else {
         fprintf(stderr, "{\"pull_off_F\": null, \"pull_off_d\": null");
     }
@@ -300,7 +241,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             (unsigned)tab.n, (double)(tab.h * (CLI_T)tab.n),
             A->q31 ? "q31" : CLI_NAME, list ? list : "");
     free(list);
-    free(Q.nodes);
+    free(qnodes);
     free(nodes);
     return rc;
 }

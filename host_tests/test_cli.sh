@@ -97,6 +97,15 @@ grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad 
 # outside the table: exit 1 with a message
 $MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>&1
 [ $? -eq 1 ] && ok || bad "cycle beyond the table exits 1"
+# a NaN or infinite path value is refused in every arithmetic (q31: not converted)
+for arith in f32 f64 q31; do
+    for v in nan inf; do
+        err=$($MDR cycle $P --control grips --path 0,1e-7,$v --steps-per-segment 4 --a-max 2e-6 \
+            --arith $arith 2>&1 >/dev/null)
+        [ $? -eq 1 ] && printf '%s' "$err" | grep -q 'step 5 (value .*): input is NaN or infinite' && ok ||
+            bad "cycle --path with $v ($arith) exits 1 at step 5: $err"
+    done
+done
 
 # bad arguments: exit 2, one line on stderr
 expect2() {

@@ -1,0 +1,132 @@
+/*
+ * mdr_host.h: host-side helpers shared by the mdr CLI (examples/mdr_cli.c)
+ * and the Python package (python/src/mdr_py.c), so that both drive the
+ * engines the same way and give the same numbers:
+ *   - the value of the controlled variable at a tick of a piecewise-linear
+ *     path;
+ *   - the q31 engine in SI units: the units of its Q formats in double and
+ *     the conversions SI <-> raw (lib/include/mdr_q31.h, "Units").
+ * Host code (double arithmetic); static inline functions, nothing from the C
+ * library. The per-arithmetic helpers are in mdr_host_t.h.
+ */
+#ifndef MDR_HOST_H
+#define MDR_HOST_H
+
+#include "mdr.h"
+
+/**
+ * @brief Value of the controlled variable at tick j of segment seg of a
+ *        piecewise-linear path: path[seg] + (path[seg+1] - path[seg]) j/steps.
+ * @param path  the path's vertices (at least seg + 2 of them)
+ * @param steps ticks per segment, >= 1; j = 0 is path[seg], j = steps is
+ *              path[seg+1] up to rounding
+ */
+static inline double mdr_host_path_value(const double *path, long steps, long seg, long j)
+{
+    return path[seg] + (path[seg + 1] - path[seg]) * (double)j / (double)steps;
+}
+
+/** The q31 engine with its table and the SI units of its Q formats, in
+ *  double (from L + L_lo, D0, Z0 and F0 = 2 E* L D0). */
+typedef struct {
+    mdr_table_q31 t;
+    mdr_engine_q31 e;
+    double L;  /**< length unit [m] (a: Q1.30 of L) */
+    double D0; /**< depth unit [m] (d: Q2.29 of D0) */
+    double F0; /**< force unit [N] (F: Q2.29 of F0) */
+    double Z0; /**< base position unit [m] (z: Q2.29 of Z0) */
+} mdr_host_q31;
+
+/**
+ * @brief The SI units of a q31 engine, after its table (t) and engine (e)
+ *        were initialised.
+ * @param E  the effective modulus E* [Pa] the engine was initialised with,
+ *           as a double (F0 = 2 E* L D0 to double precision)
+ */
+static inline void mdr_host_q31_units(mdr_host_q31 *q, double E)
+{
+    q->L = (double)q->t.L + (double)q->t.L_lo;
+    q->D0 = (double)q->e.D0;
+    q->F0 = 2.0 * E * q->L * q->D0;
+    q->Z0 = (double)q->e.Z0;
+}
+
+/**
+ * @brief SI value -> raw Q2.29 of unit, rounded to nearest (ties away from 0).
+ * @param v     value [SI]
+ * @param unit  D0, F0 or Z0 of the engine [SI], > 0
+ * @param[out] raw  the raw value; unchanged on MDR_E_NONFINITE
+ * @return MDR_OK; MDR_E_NONFINITE (v is NaN or +-inf: nothing converted);
+ *         MDR_E_OVERFLOW (|v| beyond the steps' documented input range of
+ *         2 units, raw +-2^30: *raw is then the value clamped to the int32
+ *         range, which a step saturates to +-2^30, setting MDR_FLAG_SAT)
+ */
+static inline mdr_status mdr_host_q31_raw(double v, double unit, int32_t *raw)
+{
+    double s;
+    if (!(v - v == 0.0)) { /* NaN or +-inf (v - v is NaN for both) */
+        return MDR_E_NONFINITE;
+    }
+    s = v / unit * 536870912.0;
+    s = s > 2147483647.0 ? 2147483647.0 : s < -2147483648.0 ? -2147483648.0 : s;
+    *raw = (int32_t)(s < 0 ? -(long long)(0.5 - s) : (long long)(s + 0.5));
+    if (*raw > MDR_Q30_ONE || *raw < -MDR_Q30_ONE) {
+        return MDR_E_OVERFLOW;
+    }
+    return MDR_OK;
+}
+
+/**
+ * @brief One tick of the q31 engine in SI: the controlled value v [m or N]
+ *        converted to raw, the step, its outputs converted to SI in double.
+ * @param control  MDR_CONTROL_GRIPS (v = d), _LOAD (v = F), else z (machine)
+ * @param strict   1: refuse a value beyond the documented input range
+ *                 (MDR_E_OVERFLOW, no step); 0: step with it (the step
+ *                 saturates it and sets MDR_FLAG_SAT)
+ * @param[out] o   written on MDR_OK only
+ * @return MDR_E_NONFINITE (v NaN or inf; no step), MDR_E_OVERFLOW (strict),
+ *         or the step's status
+ */
+static inline mdr_status mdr_host_q31_step(mdr_host_q31 *q, uint8_t control, double v, int strict,
+                                           mdr_step_f64 *o)
+{
+    const double unit = control == MDR_CONTROL_GRIPS ? q->D0 : control == MDR_CONTROL_LOAD ? q->F0 : q->Z0;
+    int32_t raw = 0;
+    mdr_step_q31 s;
+    mdr_status st = mdr_host_q31_raw(v, unit, &raw);
+    if (st == MDR_E_NONFINITE || (st != MDR_OK && strict)) {
+        return st;
+    }
+    if (control == MDR_CONTROL_GRIPS) {
+        st = mdr_engine_step_d_q31(&q->e, raw, &s);
+    } else if (control == MDR_CONTROL_LOAD) {
+        st = mdr_engine_step_F_q31(&q->e, raw, &s);
+    } else {
+        st = mdr_engine_step_z_q31(&q->e, raw, &s);
+    }
+    if (st == MDR_OK) {
+        const double ua = q->L / 1073741824.0, ud = q->D0 / 536870912.0;
+        const double uF = q->F0 / 536870912.0, uz = q->Z0 / 536870912.0;
+        o->z = s.z * (q->e.machine ? uz : ud);
+        o->d = s.d * ud;
+        o->F = s.F * uF;
+        o->a = s.a * ua;
+        o->a0 = s.a0 * ua;
+        o->d0 = s.d0 * ud;
+        o->F0 = s.F0 * uF;
+        o->a1 = s.a1 * ua;
+        o->d1 = s.d1 * ud;
+        o->F1 = s.F1 * uF;
+        o->event = s.event;
+        o->jumps = s.jumps;
+    }
+    return st;
+}
+
+/** @brief Raw Q15.48 energy of a q31 engine -> J (unit W0 = F0 D0). */
+static inline double mdr_host_q31_energy(const mdr_host_q31 *q, int64_t v)
+{
+    return (double)v * (q->F0 * q->D0 / 281474976710656.0);
+}
+
+#endif /* MDR_HOST_H */

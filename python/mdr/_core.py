@@ -1,0 +1,116 @@
+"""The extension, the error type and the array plumbing shared by the
+package's modules."""
+import numpy as np
+
+from ._mdr_cffi import ffi, lib
+
+#: status code -> name ("MDR_E_RADIUS"), from the constants the extension
+#: was compiled with (mdr_types.h)
+STATUS_NAMES = {getattr(lib, n): n for n in dir(lib) if n == "MDR_OK" or n.startswith("MDR_E_")}
+
+ARITHS = {"f32": lib.MDRPY_F32, "f64": lib.MDRPY_F64, "q31": lib.MDRPY_Q31}
+CONTROLS = {"load": lib.MDR_CONTROL_LOAD, "grips": lib.MDR_CONTROL_GRIPS, "machine": lib.MDR_CONTROL_MACHINE}
+
+
+def status_text(code):
+    """The library's text for a status code (mdr_status_str)."""
+    return ffi.string(lib.mdr_status_str(code)).decode()
+
+
+def event_name(code):
+    """The library's name of an event code (mdr_event_str): "pull-off", ..."""
+    return ffi.string(lib.mdr_event_str(code)).decode()
+
+
+class Error(ValueError):
+    """A refusal of libmdr.
+
+    Attributes:
+        status: the library's status name, e.g. "MDR_E_RADIUS"
+        code: its value (negative)
+        message: the library's text (mdr_status_str), e.g. "contact radius
+            outside the profile's domain"
+        where: what was refused (call, element, tick, value)
+        index: the element (int, or a tuple for arrays of more than one
+            dimension) or tick that failed, or None
+        value: the refused input value, or None
+        partial: Engine.run only: the Run of the ticks completed before the
+            refusal (None elsewhere)
+    """
+
+    def __init__(self, code, where="", index=None, value=None, hint="", partial=None):
+        self.code = int(code)
+        self.status = STATUS_NAMES.get(self.code, "MDR status %d" % self.code)
+        self.message = status_text(self.code)
+        self.where = where
+        self.index = index
+        self.value = value
+        self.hint = hint
+        self.partial = partial
+        super().__init__(str(self))
+
+    def __str__(self):
+        s = "%s (%s)" % (self.message, self.status)
+        if self.where:
+            s = "%s: %s" % (self.where, s)
+        return s + ("; " + self.hint if self.hint else "")
+
+
+def check(code, where, **kw):
+    """Raise Error unless code is MDR_OK."""
+    if code != lib.MDR_OK:
+        raise Error(code, where, **kw)
+
+
+FLT_MAX = float(np.finfo(np.float32).max)
+
+
+def narrow(arith, where, **values):
+    """The values as floats; for f32 a finite value beyond float's range is
+    refused (MDR_E_OVERFLOW) instead of becoming inf on the way to C."""
+    out = [float(v) for v in values.values()]
+    if arith == "f32":
+        for (name, _), v in zip(values.items(), out):
+            if abs(v) > FLT_MAX and v - v == 0:
+                raise Error(lib.MDR_E_OVERFLOW, "%s: %s = %.9g (beyond float)" % (where, name, v), value=v)
+    return out
+
+
+def control_code(control, where):
+    try:
+        return CONTROLS[control]
+    except (KeyError, TypeError):
+        raise Error(lib.MDR_E_CONTROL, "%s: control %r (load, grips or machine)" % (where, control)) from None
+
+
+def broadcast(*xs):
+    """(shape, flat float64 contiguous arrays) of the broadcast inputs."""
+    arrs = np.broadcast_arrays(*[np.asarray(x, dtype=np.float64) for x in xs])
+    return arrs[0].shape, [np.ascontiguousarray(a).reshape(-1) for a in arrs]
+
+
+def dptr(a):
+    """double * to a contiguous float64 array (no copy)."""
+    return ffi.from_buffer("double[]", a)
+
+
+def element_error(code, what, shape, i, names, values):
+    """Error for element i of a vectorised call (flat index i into shape)."""
+    if shape == ():
+        index = None
+        where = what
+    else:
+        index = int(i) if len(shape) == 1 else tuple(int(k) for k in np.unravel_index(i, shape))
+        where = "%s: element %s" % (what, index)
+    vals = ", ".join("%s = %.9g" % (n, v[i]) for n, v in zip(names, values))
+    return Error(code, "%s (%s)" % (where, vals), index=index, value=tuple(float(v[i]) for v in values)
+                 if len(values) > 1 else float(values[0][i]))
+
+
+def shaped(a, shape):
+    """A result column in the input's shape; a float for scalar input."""
+    return a.reshape(shape) if shape != () else float(a[0])
+
+
+def shaped_bool(a, shape):
+    return a.view(np.bool_).reshape(shape) if shape != () else bool(a[0])

@@ -1,0 +1,278 @@
+"""mdr.Engine: libmdr's real-time spring engine (lib/include/mdr_engine_t.h,
+mdr_q31.h) driven along a piecewise-linear path of the controlled variable,
+the same way as `mdr cycle` (examples/mdr_cli.c): the same table, the same
+tick values, for q31 the same SI <-> raw conversion (examples/mdr_host.h).
+The ticks run in C (python/src/mdr_py.c); Python sees whole arrays.
+"""
+import collections
+
+import numpy as np
+
+from ._core import ARITHS, Error, check, control_code, dptr, event_name, ffi, lib
+from .contact import Contact
+
+#: one event of a run (MDR_EV_*): kind ("contact", "jump-in", "jump",
+#: "pull-off", "re-contact", "separation"), the tick it happened at, the last
+#: stable state before the jump (a0 [m], d0 [m], F0 [N]) and the state right
+#: after it at the same control value (a1, d1, F1), and the jumps in that tick
+Event = collections.namedtuple("Event", "kind step a0 d0 F0 a1 d1 F1 jumps")
+
+
+class Run:
+    """The result of Engine.run().
+
+    z, d, F, a: arrays, one value per tick [m, m, N, m] (z = d + F/k_machine,
+    or d without a machine); event: the MDR_EV_* code of each tick;
+    events: list of Event; dissipated: energy dissipated [J] by the cycles
+    completed in this run (cycles of them); path, control, steps_per_segment,
+    k_machine, arith: what was run."""
+
+    def __init__(self, **kw):
+        self.__dict__.update(kw)
+
+    @property
+    def pull_off(self):
+        """The last pull-off Event of the run, or None."""
+        po = [e for e in self.events if e.kind == "pull-off"]
+        return po[-1] if po else None
+
+    def __len__(self):
+        return len(self.d)
+
+    def __repr__(self):
+        return "<mdr.Run %s %s, %d ticks, %d events, dissipated %.6g J>" % (
+            self.arith, self.control, len(self.d), len(self.events), self.dissipated)
+
+
+class Engine:
+    """The spring engine of a contact: a table of springs and a contact state
+    that remembers its history (attached springs, pull-off, re-contact).
+
+        eng = mdr.Engine(c, springs=1024, w_adv=0.025, k_machine=0.2, arith="f32")
+        run = eng.run([0, 50e-9, -200e-9], control="machine", steps_per_segment=1000)
+
+    c: an mdr.Contact (its profile, E* and w; the engine builds its own table
+    in its arithmetic). springs: 2 ... 16384 (q31: a power of two).
+    w_adv: work of adhesion on approach, 0 <= w_adv <= w [J/m^2] (0:
+    non-adhesive loading, w: reversible JKR). k_machine: stiffness of the
+    machine between the controlled base z and the contact [N/m], 0 for none
+    (then control "machine" is refused). arith: "f64" (default), "f32" (the
+    firmware's float engine), "q31" (the fixed-point engine on the f64 table,
+    SI values converted in double as `mdr cycle --arith q31`; values beyond
+    its documented input range are refused, not saturated).
+    a_max: table extent [m]; None: chosen at the first run() as `mdr cycle`
+    does (1.25 x the radius where the equilibrium curve reaches the path's
+    largest value), so errors of the table or of the engine's parameters
+    appear there. A sampled tip: Engine.from_tip(r, f, E=..., w=...).
+    An Engine holds state: run it from one thread at a time (the C loop
+    runs without the GIL); Contacts are read-only and may be shared.
+    """
+
+    def __init__(self, contact, *, springs=1024, w_adv=0.0, k_machine=0.0, arith="f64", a_max=None):
+        if not isinstance(contact, Contact):
+            raise TypeError("Engine(contact): an mdr.Contact (a sampled tip: Engine.from_tip(r, f, ...))")
+        self._setup(contact.E, contact.w, springs, w_adv, k_machine, arith)
+        self.contact = contact
+        self.tip = None
+        self.a_max = None
+        if a_max is not None:
+            self._build(float(a_max))
+
+    @classmethod
+    def from_tip(cls, r, f, *, E, w, springs=1024, w_adv=0.0, k_machine=0.0, arith="f64"):
+        """Engine on a sampled gap profile f(r_i) [m] of a measured or worn
+        tip at radii r_i [m] (r_0 = 0, strictly increasing, at least
+        MDR_TABLE_MIN_POINTS points; mdr_table_init_gap: f' linear on each
+        interval, the Abel transform integrated exactly). The table extends
+        to r[-1]. E [Pa], w [J/m^2] and the rest as Engine()."""
+        self = cls.__new__(cls)
+        self._setup(E, w, springs, w_adv, k_machine, arith)
+        r = np.ascontiguousarray(r, dtype=np.float64)
+        f = np.ascontiguousarray(f, dtype=np.float64)
+        if r.ndim != 1 or r.shape != f.shape or r.size > 65535:
+            raise Error(lib.MDR_E_TABLE, "Engine.from_tip: r and f must be 1-D arrays of one length "
+                        "<= 65535 (got %s and %s)" % (r.shape, f.shape))
+        self.contact = None
+        self.tip = (r, f)
+        self.a_max = float(r[-1]) if r.size else None
+        self._x = ffi.new("mdrpy_engine *")
+        nodes = self._alloc()
+        check(lib.mdrpy_engine_tip(self._x, self._arith, dptr(r), dptr(f), r.size, self.E, self.w, self.w_adv,
+                                   self.k_machine, self.springs, *nodes),
+              "Engine.from_tip(%d points, springs=%d, arith=%r)" % (r.size, self.springs, self.arith))
+        self._nodes = nodes
+        return self
+
+    def _setup(self, E, w, springs, w_adv, k_machine, arith):
+        if arith not in ARITHS:
+            raise ValueError("Engine: arith must be 'f32', 'f64' or 'q31', not %r" % (arith,))
+        if isinstance(springs, bool) or not isinstance(springs, (int, np.integer)):
+            raise TypeError("Engine: springs must be an integer, not %r" % (springs,))
+        if not 0 <= springs <= 65535:
+            raise Error(lib.MDR_E_SIZE, "Engine: springs = %d (%d ... %d)" % (
+                springs, lib.MDR_SPRINGS_MIN, lib.MDR_SPRINGS_MAX))
+        self.E, self.w = float(E), float(w)
+        self.springs = int(springs)
+        self.w_adv = float(w_adv)
+        self.k_machine = float(k_machine)
+        self.arith = arith
+        self._arith = ARITHS[arith]
+        self._x = None
+
+    def _alloc(self):
+        n = self.springs + 1
+        n32 = ffi.new("mdr_node_f32[]", n) if self.arith == "f32" else ffi.NULL
+        n64 = ffi.new("mdr_node_f64[]", n) if self.arith != "f32" else ffi.NULL
+        nq = ffi.new("mdr_node_q31[]", n) if self.arith == "q31" else ffi.NULL
+        return n32, n64, nq
+
+    def _build(self, a_max):
+        c = self.contact
+        x = ffi.new("mdrpy_engine *")
+        nodes = self._alloc()
+        check(lib.mdrpy_engine_profile(x, self._arith, c.kind, list(c.p), self.E, self.w, self.w_adv,
+                                       self.k_machine, self.springs, a_max, *nodes),
+              "Engine(%r, springs=%d, w_adv=%.9g, k_machine=%.9g, arith=%r, a_max=%.9g)" % (
+                  c.profile, self.springs, self.w_adv, self.k_machine, self.arith, a_max))
+        self._x, self._nodes, self.a_max = x, nodes, a_max
+
+    def _info(self):
+        if self._x is None:
+            return None
+        o = ffi.new("mdrpy_info *")
+        lib.mdrpy_engine_info(self._x, o)
+        return o
+
+    @property
+    def state(self):
+        """(a [m], d [m], F [N], in_contact) after the last tick (before any
+        run: separated)."""
+        o = self._info()
+        return (0.0, 0.0, 0.0, False) if o is None else (o.a, o.d, o.F, bool(o.contact))
+
+    @property
+    def dissipated(self):
+        """Energy dissipated over the cycles completed since the engine was
+        built or reset [J]."""
+        o = self._info()
+        return 0.0 if o is None else o.dissipated
+
+    @property
+    def cycles(self):
+        """Cycles (approach, then complete separation) completed."""
+        o = self._info()
+        return 0 if o is None else int(o.cycles)
+
+    @property
+    def flags(self):
+        """Sticky MDR_FLAG_* bits of the engine."""
+        o = self._info()
+        return 0 if o is None else int(o.flags)
+
+    @property
+    def q31_units(self):
+        """q31: the SI units of the Q formats {L, D0, F0, Z0} [m, m, N, m]
+        (a: Q1.30 of L; d, F, z: Q2.29 of D0, F0, Z0); None otherwise."""
+        o = self._info()
+        if o is None or self.arith != "q31":
+            return None
+        return {"L": o.L, "D0": o.D0, "F0": o.F0, "Z0": o.Z0}
+
+    def reset(self):
+        """Back to separated, without history or dissipated energy, on the
+        same table."""
+        if self._x is not None:
+            check(lib.mdrpy_engine_reset(self._x), "Engine.reset")
+
+    def _check_path(self, ctl, path, pp):
+        bad = ffi.new("size_t *")
+        st = lib.mdrpy_check_path(self._x if self._x is not None else ffi.NULL, ctl, pp, path.size, bad)
+        if st != lib.MDR_OK:
+            raise Error(st, "Engine.run: path[%d] = %.9g" % (bad[0], path[bad[0]]), index=int(bad[0]),
+                        value=float(path[bad[0]]),
+                        hint="q31 takes |value| <= 2 units of %(D0).3g m (d), %(F0).3g N (F), %(Z0).3g m (z)"
+                        % self.q31_units if st == lib.MDR_E_OVERFLOW and self.arith == "q31" else "")
+
+    def run(self, path, *, control, steps_per_segment):
+        """Drive the engine along the piecewise-linear path of the controlled
+        variable: control "grips" (path of d [m]), "load" (F [N]) or
+        "machine" (base position z [m], needs k_machine). Tick 0 is path[0],
+        then steps_per_segment ticks per segment: 1 + (len(path) - 1) *
+        steps_per_segment ticks. The engine keeps its state: a second run
+        continues from where the first ended.
+
+        Returns a Run. A refused tick raises mdr.Error with .index the tick,
+        .value the control value and .partial the Run of the ticks before it
+        (the engine stays as after the last of them)."""
+        ctl = control_code(control, "Engine.run")
+        path = np.ascontiguousarray(path, dtype=np.float64)
+        if path.ndim != 1 or path.size < 2:
+            raise Error(lib.MDR_E_PARAM, "Engine.run: path must be a 1-D sequence of 2 or more values")
+        steps = steps_per_segment
+        if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or not 1 <= steps <= 2**31 - 1:
+            raise Error(lib.MDR_E_PARAM, "Engine.run: steps_per_segment must be an integer >= 1, not %r" % (steps,))
+        steps = int(steps)
+        pp = dptr(path)
+        if self._x is None:
+            self._check_path(ctl, path, pp)  # finite, before the table extent is taken from it
+            c = self.contact
+            a_max = ffi.new("double *")
+            check(lib.mdrpy_extent(self._arith, c.kind, list(c.p), self.E, self.w, ctl, self.k_machine, pp,
+                                   path.size, a_max), "Engine.run: default a_max")
+            self._build(a_max[0])
+        self._check_path(ctl, path, pp)
+        n = 1 + (path.size - 1) * steps
+        z, d, F, a = (np.empty(n) for _ in range(4))
+        event = np.empty(n, dtype=np.uint8)
+        cap = 64
+        ev_step = np.empty(cap, dtype=np.uintp)
+        ev_code = np.empty((cap, 2), dtype=np.uint8)
+        ev_val = np.empty((cap, lib.MDRPY_EV_N))
+        ev_n = ffi.new("size_t *", 0)
+        done = ffi.new("size_t *")
+        before = self._info()
+        t0 = 0
+        zp, dp, Fp, ap, ep = dptr(z), dptr(d), dptr(F), dptr(a), ffi.from_buffer("uint8_t[]", event)
+        while True:
+            st = lib.mdrpy_run(self._x, ctl, pp, path.size, steps, t0, n - t0, zp + t0, dp + t0, Fp + t0,
+                               ap + t0, ep + t0, cap, ev_n, ffi.from_buffer("size_t[]", ev_step),
+                               ffi.from_buffer("uint8_t[]", ev_code), dptr(ev_val), done)
+            t0 += done[0]
+            if st != lib.MDRPY_MORE:
+                break
+            cap *= 2  # room for more events, then on from tick t0
+            ev_step = np.concatenate([ev_step, np.empty_like(ev_step)])
+            ev_code = np.concatenate([ev_code, np.empty_like(ev_code)])
+            ev_val = np.concatenate([ev_val, np.empty_like(ev_val)])
+        k = ev_n[0]
+        cols = [lib.MDRPY_EV_A0, lib.MDRPY_EV_D0, lib.MDRPY_EV_F0, lib.MDRPY_EV_A1, lib.MDRPY_EV_D1, lib.MDRPY_EV_F1]
+        events = [Event(event_name(ev_code[i, 0]), int(ev_step[i]), *map(float, ev_val[i, cols]),
+                        jumps=int(ev_code[i, 1])) for i in range(k) if ev_step[i] < t0]  # (q31: not the saturated tick's)
+        after = self._info()
+        result = Run(z=z[:t0], d=d[:t0], F=F[:t0], a=a[:t0], event=event[:t0], events=events,
+                     dissipated=after.dissipated - before.dissipated, cycles=after.cycles - before.cycles,
+                     path=path, control=control, steps_per_segment=steps, k_machine=self.k_machine,
+                     arith=self.arith)
+        if st != lib.MDR_OK:
+            v = _path_value(path, steps, t0)
+            raise Error(st, "Engine.run: tick %d (%s = %.9g)" % (t0, {"grips": "d", "load": "F"}.get(control, "z"), v),
+                        index=t0, value=v, partial=result,
+                        hint="raise a_max (now %.9g m)" % self.a_max if st == lib.MDR_E_OUTSIDE else
+                        _SATURATED % self.q31_units if st == lib.MDR_E_OVERFLOW and self.arith == "q31" else "")
+        return result
+
+    def __repr__(self):
+        src = repr(self.contact) if self.contact is not None else "tip of %d points" % self.tip[0].size
+        return "<mdr.Engine %s on %s, %d springs, a_max %s, w_adv %.9g, k_machine %.9g>" % (
+            self.arith, src, self.springs, "%.9g m" % self.a_max if self.a_max else "(at first run)",
+            self.w_adv, self.k_machine)
+
+
+_SATURATED = ("a q31 output saturated: beyond 2 units of %(D0).3g m (d), %(F0).3g N (F), %(Z0).3g m (z); "
+              "a separated machine's d follows z: end the path nearer the surface, or use f64")
+
+
+def _path_value(path, steps, t):
+    """The control value of tick t (mdr_host_path_value, as the C loop)."""
+    seg, j = (0, 0) if t == 0 else divmod(t - 1, steps)
+    return lib.mdr_host_path_value(dptr(path), steps, seg, j + (t > 0))

@@ -1,0 +1,250 @@
+/*
+ * mdr_py.c: the C side of the Python package (see mdr_py.h). The loops
+ * over points are instantiated per floating arithmetic from mdr_py_t.inc;
+ * the engines of the three arithmetics share one tick loop, which steps
+ * exactly as `mdr cycle` does (the same path values, conversions and q31
+ * units: examples/mdr_host.h).
+ */
+#include <float.h>
+#include <stdlib.h>
+
+#include "mdr_py.h"
+
+#define MDR_TEMPLATE "mdr_py_t.inc"
+#include "mdr_each_arith.h"
+
+/* the q31 table from the f64 one and the double init, as `mdr cycle` */
+static mdr_status mdrpy_init(mdrpy_engine *x, mdr_node_q31 *nq)
+{
+    mdr_status st;
+    if (x->arith == MDRPY_F32) {
+        return mdrpy_engine_init_f32(x);
+    }
+    if (x->arith == MDRPY_F64) {
+        return mdrpy_engine_init_f64(x);
+    }
+    if (nq != NULL) {
+        st = mdr_table_q31_from_f64(&x->q.t, nq, &x->table_f64);
+        if (st != MDR_OK) {
+            return st;
+        }
+    }
+    st = mdr_engine_init_q31_f64(&x->q.e, &x->q.t, x->E, x->w, x->w_adv, x->k_m);
+    if (st == MDR_OK) {
+        mdr_host_q31_units(&x->q, x->E);
+    }
+    return st;
+}
+
+/* the material of an engine, then its init (the engine points to the
+ * table inside x: x is built in place, never copied) */
+static mdr_status mdrpy_finish(mdrpy_engine *x, double E, double w, double w_adv, double k_m,
+                               mdr_node_q31 *nq)
+{
+    x->E = E;
+    x->w = w;
+    x->w_adv = w_adv;
+    x->k_m = k_m;
+    return mdrpy_init(x, nq);
+}
+
+mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
+                        uint8_t control, double k_m, const double *path, size_t npath,
+                        double *a_max)
+{
+    if (p == NULL || path == NULL || a_max == NULL || npath == 0) {
+        return MDR_E_NULL;
+    }
+    if (arith == MDRPY_F32) {
+        return mdrpy_extent_f32(kind, p, E, w, control, k_m, path, npath, a_max);
+    }
+    return mdrpy_extent_f64(kind, p, E, w, control, k_m, path, npath, a_max);
+}
+
+mdr_status mdrpy_engine_profile(mdrpy_engine *x, uint8_t arith, uint8_t kind, const double p[3],
+                                double E, double w, double w_adv, double k_m, uint16_t springs,
+                                double a_max, mdr_node_f32 *n32, mdr_node_f64 *n64,
+                                mdr_node_q31 *nq)
+{
+    mdr_status st;
+    if (x == NULL || p == NULL || arith > MDRPY_Q31 || (arith == MDRPY_F32 ? n32 == NULL : n64 == NULL) ||
+        (arith == MDRPY_Q31 && nq == NULL)) {
+        return MDR_E_NULL;
+    }
+    x->arith = arith;
+    if (arith == MDRPY_F32) {
+        st = mdrpy_table_profile_f32(x, kind, p, E, w, springs, a_max, n32);
+    } else {
+        st = mdrpy_table_profile_f64(x, kind, p, E, w, springs, a_max, n64);
+    }
+    if (st != MDR_OK) {
+        return st;
+    }
+    return mdrpy_finish(x, E, w, w_adv, k_m, nq);
+}
+
+mdr_status mdrpy_engine_tip(mdrpy_engine *x, uint8_t arith, const double *r, const double *f,
+                            uint16_t m, double E, double w, double w_adv, double k_m,
+                            uint16_t springs, mdr_node_f32 *n32, mdr_node_f64 *n64,
+                            mdr_node_q31 *nq)
+{
+    mdr_status st;
+    if (x == NULL || r == NULL || f == NULL || arith > MDRPY_Q31 ||
+        (arith == MDRPY_F32 ? n32 == NULL : n64 == NULL) || (arith == MDRPY_Q31 && nq == NULL)) {
+        return MDR_E_NULL;
+    }
+    x->arith = arith;
+    if (arith == MDRPY_F32) {
+        st = mdrpy_table_tip_f32(x, r, f, m, springs, n32);
+    } else {
+        st = mdrpy_table_tip_f64(x, r, f, m, springs, n64);
+    }
+    if (st != MDR_OK) {
+        return st;
+    }
+    return mdrpy_finish(x, E, w, w_adv, k_m, nq);
+}
+
+mdr_status mdrpy_engine_reset(mdrpy_engine *x)
+{
+    if (x == NULL) {
+        return MDR_E_NULL;
+    }
+    return mdrpy_init(x, NULL);
+}
+
+void mdrpy_engine_info(const mdrpy_engine *x, mdrpy_info *o)
+{
+    o->L = o->D0 = o->F0 = o->Z0 = 0;
+    if (x->arith == MDRPY_F32) {
+        mdrpy_info_f32(x, o);
+    } else {
+        mdrpy_info_f64(x, o);
+    }
+    if (x->arith == MDRPY_Q31) {
+        const mdr_host_q31 *q = &x->q;
+        o->a = q->e.a * (q->L / 1073741824.0);
+        o->d = q->e.d * (q->D0 / 536870912.0);
+        o->F = q->e.F * (q->F0 / 536870912.0);
+        o->dissipated = mdr_host_q31_energy(q, q->e.dissipated);
+        o->last_cycle = mdr_host_q31_energy(q, q->e.last_cycle);
+        o->cycles = q->e.cycles;
+        o->contact = q->e.contact;
+        o->flags = q->e.flags;
+        o->L = q->L;
+        o->D0 = q->D0;
+        o->F0 = q->F0;
+        o->Z0 = q->Z0;
+    }
+}
+
+mdr_status mdrpy_check_path(const mdrpy_engine *x, uint8_t control, const double *path,
+                            size_t npath, size_t *bad)
+{
+    size_t i;
+    if (path == NULL || bad == NULL) {
+        return MDR_E_NULL;
+    }
+    if (control != MDR_CONTROL_LOAD && control != MDR_CONTROL_GRIPS && control != MDR_CONTROL_MACHINE) {
+        return MDR_E_CONTROL;
+    }
+    for (i = 0; i < npath; i++) {
+        const double v = path[i];
+        mdr_status st = MDR_OK;
+        if (!(v - v == 0.0)) {
+            st = MDR_E_NONFINITE;
+        } else if (x == NULL) {
+            st = MDR_OK;
+        } else if (x->arith == MDRPY_F32 && (v > (double)FLT_MAX || v < -(double)FLT_MAX)) {
+            st = MDR_E_OVERFLOW;
+        } else if (x->arith == MDRPY_Q31) {
+            const mdr_host_q31 *q = &x->q;
+            int32_t raw;
+            st = mdr_host_q31_raw(v, control == MDR_CONTROL_GRIPS  ? q->D0
+                                     : control == MDR_CONTROL_LOAD ? q->F0
+                                                                   : q->Z0,
+                                  &raw);
+        }
+        if (st != MDR_OK) {
+            *bad = i;
+            return st;
+        }
+    }
+    return MDR_OK;
+}
+
+mdr_status mdrpy_run(mdrpy_engine *x, uint8_t control, const double *path, size_t npath, long steps,
+                     size_t tick0, size_t nticks, double *z, double *d, double *F, double *a,
+                     uint8_t *event, size_t ev_cap, size_t *ev_n, size_t *ev_step,
+                     uint8_t *ev_code, double *ev_val, size_t *done)
+{
+    const uint8_t sat0 = x != NULL && x->arith == MDRPY_Q31 ? (uint8_t)(x->q.e.flags & MDR_FLAG_SAT) : 0u;
+    const int store = z != NULL && d != NULL && F != NULL && a != NULL;
+    size_t i;
+    if (x == NULL || path == NULL || ev_n == NULL || done == NULL ||
+        (ev_cap > 0 && (ev_step == NULL || ev_code == NULL || ev_val == NULL))) {
+        return MDR_E_NULL;
+    }
+    if (npath < 2 || steps < 1) {
+        return MDR_E_PARAM;
+    }
+    if (control != MDR_CONTROL_LOAD && control != MDR_CONTROL_GRIPS && control != MDR_CONTROL_MACHINE) {
+        return MDR_E_CONTROL;
+    }
+    for (i = 0; i < nticks; i++) {
+        const size_t t = tick0 + i;
+        /* tick 0 is path[0]; then steps ticks per segment (j = 1 ... steps) */
+        const long seg = t == 0 ? 0 : (long)((t - 1) / (size_t)steps);
+        const long j = t == 0 ? 0 : (long)((t - 1) % (size_t)steps) + 1;
+        mdr_step_f64 r;
+        mdr_status st;
+        double v;
+        if ((size_t)seg + 1 >= npath) {
+            *done = i;
+            return MDR_E_PARAM; /* beyond the path's last tick */
+        }
+        if (ev_cap > 0 && *ev_n == ev_cap) {
+            *done = i;
+            return MDRPY_MORE;
+        }
+        v = mdr_host_path_value(path, steps, seg, j);
+        if (x->arith == MDRPY_F32) {
+            st = mdrpy_tick_f32(x, control, v, &r);
+        } else if (x->arith == MDRPY_F64) {
+            st = mdrpy_tick_f64(x, control, v, &r);
+        } else {
+            st = mdr_host_q31_step(&x->q, control, v, 1, &r); /* values beyond the range refused */
+        }
+        if (st != MDR_OK) {
+            *done = i;
+            return st;
+        }
+        if (store) {
+            z[i] = r.z;
+            d[i] = r.d;
+            F[i] = r.F;
+            a[i] = r.a;
+        }
+        if (event != NULL) {
+            event[i] = r.event;
+        }
+        if (r.event != MDR_EV_NONE && ev_cap > 0) {
+            const size_t k = (*ev_n)++;
+            ev_step[k] = t;
+            ev_code[2 * k] = r.event;
+            ev_code[2 * k + 1] = r.jumps;
+            ev_val[MDRPY_EV_N * k + MDRPY_EV_A0] = r.a0;
+            ev_val[MDRPY_EV_N * k + MDRPY_EV_D0] = r.d0;
+            ev_val[MDRPY_EV_N * k + MDRPY_EV_F0] = r.F0;
+            ev_val[MDRPY_EV_N * k + MDRPY_EV_A1] = r.a1;
+            ev_val[MDRPY_EV_N * k + MDRPY_EV_D1] = r.d1;
+            ev_val[MDRPY_EV_N * k + MDRPY_EV_F1] = r.F1;
+        }
+        if (x->arith == MDRPY_Q31 && !sat0 && (x->q.e.flags & MDR_FLAG_SAT)) {
+            *done = i;
+            return MDR_E_OVERFLOW; /* a result saturated (MDR_FLAG_SAT) */
+        }
+    }
+    *done = nticks;
+    return MDR_OK;
+}

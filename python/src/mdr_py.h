@@ -1,0 +1,172 @@
+/*
+ * mdr_py.h: the C side of the Python package (python/mdr): loops over
+ * arrays of points and over the ticks of a path, so that no Python loop runs
+ * per point or per tick. Plain C99 over the public headers of libmdr and
+ * the host helpers the CLI uses (examples/mdr_host.h); compiled with the
+ * library's warning flags into the extension. Every function returns the
+ * library's status and names the element or tick that failed.
+ *
+ * Arrays: inputs and outputs are double (SI), whatever the arithmetic; the
+ * f32 functions convert each input to float (a finite value beyond float's
+ * range is MDR_E_OVERFLOW) and widen each output exactly. Outputs of n
+ * points with k columns are stored column after column, out[j * n + i]
+ * (column j as the MDRPY_* index below), so each column is a contiguous
+ * array. On an error nothing after the failing element is written.
+ */
+#ifndef MDR_PY_H
+#define MDR_PY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "mdr.h"
+#include "mdr_host.h"
+
+/** Arithmetic of an engine. */
+#define MDRPY_F32 0u
+#define MDRPY_F64 1u
+#define MDRPY_Q31 2u
+
+/** mdrpy_run(): the event buffers are full; call again from tick0 + *done
+ *  with room for more events (not an error: no status is negative). */
+#define MDRPY_MORE 1
+
+/** Columns of mdrpy_eq_*(): the equilibrium state at a (mdr_eqstate). */
+#define MDRPY_EQ_A 0
+#define MDRPY_EQ_D 1
+#define MDRPY_EQ_F 2
+#define MDRPY_EQ_DD_DA 3
+#define MDRPY_EQ_DF_DA 4
+#define MDRPY_EQ_DL 5
+#define MDRPY_EQ_K_I 6
+#define MDRPY_EQ_G 7
+#define MDRPY_EQ_N 8
+/** Columns of the flags of mdrpy_eq_*() (0 or 1). */
+#define MDRPY_EQ_STABLE_LOAD 0
+#define MDRPY_EQ_STABLE_GRIPS 1
+#define MDRPY_EQ_NFLAGS 2
+
+/** Columns of mdrpy_state_*(): any state (a, d). */
+#define MDRPY_ST_A 0
+#define MDRPY_ST_D 1
+#define MDRPY_ST_F 2
+#define MDRPY_ST_K_I 3
+#define MDRPY_ST_G 4
+#define MDRPY_ST_N 5
+
+/** Columns of mdrpy_profile_*(): the equivalent profile at x. */
+#define MDRPY_PR_G 0
+#define MDRPY_PR_DG 1
+#define MDRPY_PR_GINT 2
+#define MDRPY_PR_N 3
+
+/** Columns of the event values of mdrpy_run(). */
+#define MDRPY_EV_A0 0
+#define MDRPY_EV_D0 1
+#define MDRPY_EV_F0 2
+#define MDRPY_EV_A1 3
+#define MDRPY_EV_D1 4
+#define MDRPY_EV_F1 5
+#define MDRPY_EV_N 6
+
+/** An engine of any arithmetic with its table (nodes are the caller's). */
+typedef struct {
+    uint8_t arith;           /**< MDRPY_F32, _F64, _Q31 */
+    double E, w, w_adv, k_m; /**< as given to init [Pa, J/m^2, J/m^2, N/m] */
+    mdr_table_f32 table_f32; /**< f32 */
+    mdr_engine_f32 engine_f32;
+    mdr_table_f64 table_f64; /**< f64; q31: the table the q31 one is made from */
+    mdr_engine_f64 engine_f64;
+    mdr_host_q31 q;          /**< q31: table, engine, SI units */
+} mdrpy_engine;
+
+/** State of an engine in SI (double). */
+typedef struct {
+    double a, d, F;        /**< contact radius [m], depth [m], force [N] after the last step */
+    double dissipated;     /**< energy dissipated over completed cycles [J] */
+    double last_cycle;     /**< energy dissipated in the last completed cycle [J] */
+    double a_max;          /**< table extent [m] */
+    double L, D0, F0, Z0;  /**< q31: units of the Q formats [m, m, N, m]; 0 otherwise */
+    uint32_t cycles;       /**< completed cycles */
+    uint16_t springs;      /**< springs of the table */
+    uint8_t contact;       /**< 1 in contact */
+    uint8_t flags;         /**< sticky MDR_FLAG_* */
+} mdrpy_info;
+
+/* ---- contacts: one set per floating arithmetic (mdr_py_t.h) ---- */
+#define MDR_TEMPLATE "mdr_py_t.h"
+#include "mdr_each_arith.h"
+
+/* ---- engines ---- */
+
+/**
+ * @brief Default table extent for a path (mdr_host_extent(), as the CLI):
+ *        computed in f32 for MDRPY_F32, in f64 otherwise.
+ * @return MDR_OK or the library's status (contact init, default start, eq)
+ */
+mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
+                        uint8_t control, double k_m, const double *path, size_t npath,
+                        double *a_max);
+
+/**
+ * @brief Engine on the spring table of an analytic profile of extent a_max.
+ *        f32: f32 contact and table; f64: f64; q31: the f64 table converted
+ *        (mdr_table_q31_from_f64) and the double init, as `mdr cycle`.
+ * @param n32, n64, nq  caller storage of MDR_TABLE_NODES(springs) nodes for
+ *        the arithmetic (n64 and nq for q31); the others may be NULL
+ * @return MDR_OK or the library's status (x is then unusable: build it
+ *         again)
+ */
+mdr_status mdrpy_engine_profile(mdrpy_engine *x, uint8_t arith, uint8_t kind, const double p[3],
+                                double E, double w, double w_adv, double k_m, uint16_t springs,
+                                double a_max, mdr_node_f32 *n32, mdr_node_f64 *n64,
+                                mdr_node_q31 *nq);
+
+/**
+ * @brief Engine on the spring table of a sampled gap profile f(r_i), m
+ *        points (mdr_table_init_gap_*), extent r[m-1]. Nodes as above.
+ */
+mdr_status mdrpy_engine_tip(mdrpy_engine *x, uint8_t arith, const double *r, const double *f,
+                            uint16_t m, double E, double w, double w_adv, double k_m,
+                            uint16_t springs, mdr_node_f32 *n32, mdr_node_f64 *n64,
+                            mdr_node_q31 *nq);
+
+/** @brief Back to separated, no history, on the same table (the init again). */
+mdr_status mdrpy_engine_reset(mdrpy_engine *x);
+
+/** @brief The engine's state in SI. */
+void mdrpy_engine_info(const mdrpy_engine *x, mdrpy_info *o);
+
+/**
+ * @brief Check a path before running it: every value finite, and for q31
+ *        inside the steps' documented input range (+-2 units of D0, F0 or
+ *        Z0). x NULL: finiteness only (before the engine is built).
+ * @param[out] bad  index of the first refused value
+ * @return MDR_OK, MDR_E_CONTROL (control not MDR_CONTROL_*), MDR_E_NONFINITE,
+ *         MDR_E_OVERFLOW (f32: beyond float; q31: beyond the range)
+ */
+mdr_status mdrpy_check_path(const mdrpy_engine *x, uint8_t control, const double *path,
+                            size_t npath, size_t *bad);
+
+/**
+ * @brief Step the engine along ticks tick0 ... tick0 + nticks - 1 of the
+ *        piecewise-linear path (mdr_host_path_value(): tick 0 is path[0],
+ *        then steps ticks per segment), as `mdr cycle`.
+ * @param z, d, F, a  nticks outputs each [m, m, N, m], or all NULL (the
+ *        loop without storing: the benchmark's C step time)
+ * @param event   nticks MDR_EV_* codes, or NULL
+ * @param ev_cap  room for events in ev_step (tick index), ev_code
+ *        ([ev_cap][2]: MDR_EV_*, jumps) and ev_val ([ev_cap][MDRPY_EV_N]);
+ *        ev_n events stored so far (in and out); 0: events not stored
+ * @param[out] done  ticks completed
+ * @return MDR_OK (all done); MDRPY_MORE (event buffer full: *done ticks
+ *         done); a step's status (the tick *done was refused, the engine
+ *         is as after tick *done - 1); MDR_E_OVERFLOW for q31 when a step
+ *         saturated an output (MDR_FLAG_SAT newly set; that tick stored)
+ */
+mdr_status mdrpy_run(mdrpy_engine *x, uint8_t control, const double *path, size_t npath, long steps,
+                     size_t tick0, size_t nticks, double *z, double *d, double *F, double *a,
+                     uint8_t *event, size_t ev_cap, size_t *ev_n, size_t *ev_step,
+                     uint8_t *ev_code, double *ev_val, size_t *done);
+
+#endif /* MDR_PY_H */

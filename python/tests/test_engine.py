@@ -1,0 +1,297 @@
+"""mdr.Engine against the C CLI (`mdr cycle`, the same path), against closed
+forms, and its run semantics (continuing runs, reset, event buffers,
+refused ticks).
+
+Tolerances:
+  against the CLI: 0. The same C library steps the same table with the same
+      tick values; the CLI prints f32 with 9 significant digits (which
+      round-trips a float: compared after rounding to float) and f64/q31
+      with 17 (round-trips a double): every tick, event and the dissipated
+      energy must be equal.
+  JKR pull-off through the engine (paraboloid tables hold g exactly),
+      relative to -1.5 pi w R resp. -5/6 pi w R, Kendall's and the machine's
+      fold (force and base position, bisection on the closed forms); the worst
+      measured in brackets (printed at the end of the run): ENG64 = 2e-14 [1.8e-15],
+      ENG32 = 2e-6 [1.3e-6], ENGQ31 = 3e-6 [7.7e-7] (q31: a few LSB of its
+      force unit F0, README "Fixed point").
+  dissipated energy against the loop area int F dd of the run's own ticks
+      (trapezoids, fixed grips, 4000 ticks a segment, the jump split at its
+      states): LOOP = 1e-8 relative [1.3e-9; O(h^2) in the tick spacing].
+  z = d + F/k_machine on every tick: floats ZREL = 4 ulp [1.1]; q31 ZQ31 =
+      2 x the summed LSB of the three terms [0.2].
+"""
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import mdr
+from conftest import Worst
+
+ENG64, ENG32, ENGQ31 = 2e-14, 2e-6, 3e-6
+ENG = {"f64": ENG64, "f32": ENG32, "q31": ENGQ31}
+LOOP = 1e-8
+within = Worst("test_engine")  # tolerance name -> worst error (printed at the end of the run)
+
+
+def run_cli(cli, args):
+    """(columns z d F a, event names, JSON summary, exit status) of `mdr cycle`;
+    the summary also holds the lines before it on stderr ("stderr")."""
+    p = subprocess.run([cli, "cycle"] + args, capture_output=True, text=True)
+    lines = p.stdout.splitlines()
+    assert lines and lines[0] == "step,z,d,F,a,event", p.stderr
+    rows = [ln.split(",") for ln in lines[1:]]
+    cols = np.array([[float(v) for v in r[1:5]] for r in rows]).reshape(-1, 4).T
+    assert [int(r[0]) for r in rows] == list(range(len(rows)))
+    summary = json.loads(p.stderr.splitlines()[-1])
+    summary["stderr"] = "\n".join(p.stderr.splitlines()[:-1])
+    return cols, [r[5] for r in rows], summary, p.returncode
+
+
+def fmt(v):
+    return "%.17g" % v
+
+
+PROFILE_FLAGS = {"lam": "lambda"}
+
+
+def cli_args(profile, params, E, w, w_adv, k, arith, springs, path, control, steps, a_max=None):
+    args = ["--profile", profile] + sum((["--" + PROFILE_FLAGS.get(n, n), fmt(v)] for n, v in params.items()), [])
+    args += ["--E", fmt(E), "--w", fmt(w), "--w-adv", fmt(w_adv), "--control", control, "--arith", arith,
+             "--springs", str(springs), "--path", ",".join(fmt(v) for v in path),
+             "--steps-per-segment", str(steps)]
+    if k:
+        args += ["--k-machine", fmt(k)]
+    if a_max is not None:
+        args += ["--a-max", fmt(a_max)]
+    return args
+
+
+def same_as_cli(run, cols, names, summary, arith, prefix=False):
+    """The run equals the CLI's output, tick for tick (prefix: the run's ticks
+    are the first of the CLI's)."""
+    as_printed = (lambda x: np.float32(x)) if arith == "f32" else (lambda x: x)
+    n = len(run)
+    assert n == len(cols[0]) or (prefix and n < len(cols[0]))
+    for k, col in zip(("z", "d", "F", "a"), cols):
+        got, col = getattr(run, k), col[:n]
+        assert np.array_equal(as_printed(got), as_printed(col)), (k, np.flatnonzero(as_printed(got) != as_printed(col))[:5])
+    assert [mdr.event_name(e) for e in run.event] == names[:n]
+    want = [e for e in summary["event_list"] if e["step"] < n]
+    assert len(run.events) == len(want)
+    if prefix:
+        return
+    assert len(run.events) == summary["events"]
+    for e, s in zip(run.events, want):
+        assert (e.kind, e.step, e.jumps) == (s["event"], s["step"], s["jumps"])
+        for k in ("a0", "d0", "F0", "a1", "d1", "F1"):
+            assert as_printed(getattr(e, k)) == as_printed(s[k]), (e, k)
+    assert as_printed(run.dissipated) == as_printed(summary["dissipated"])
+    assert run.cycles == summary["cycles"]
+    po = run.pull_off
+    assert (po is None) == (summary["pull_off_F"] is None)
+    if po is not None:
+        assert as_printed(po.F0) == as_printed(summary["pull_off_F"])
+
+
+# scenes (profile, params, E, w, w_adv, k_machine, paths per control)
+SCENES = [
+    ("paraboloid", dict(R=10e-6), 1e6, 0.05, 0.025, 0.2,
+     {"grips": [0, 0.5e-6, -0.6e-6], "load": [0, 3e-6, -3e-6], "machine": [0, 1e-6, -20e-6, 1e-6, -20e-6]}),
+    ("sphere", dict(R=20e-9), 1e9, 0.05, 0.05, 0.2,
+     {"grips": [-1e-9, 2e-9, -1e-9], "load": [0, 5e-9, -6e-9], "machine": [-2e-9, 3e-9, -40e-9]}),
+    ("wavy", dict(R=10e-6, h=1.5e-8, lam=5e-7), 1e6, 0.05, 0.05, 0.5,
+     {"grips": [0, 1e-6, -1e-6], "load": [0, 2e-5, -1e-5], "machine": [0, 2e-5, -1e-4]}),
+    ("flatpunch", dict(a0=1e-6), 1e6, 0.05, 0.0, 1.0,
+     {"grips": [0, 1e-7, -1e-6], "load": [0, 1e-7, -3e-6], "machine": [0, 1e-7, -3e-6]}),
+]
+
+
+@pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
+@pytest.mark.parametrize("control", ["grips", "load", "machine"])
+@pytest.mark.parametrize("scene", SCENES, ids=[s[0] for s in SCENES])
+def test_engine_equals_cli(cli, scene, control, arith):
+    profile, params, E, w, w_adv, k, paths = scene
+    path = paths[control]
+    steps = 700
+    cols, names, summary, rc = run_cli(cli, cli_args(profile, params, E, w, w_adv, k, arith, 1024, path,
+                                                     control, steps))
+    assert rc == 0, summary
+    c = mdr.Contact(profile, E=E, w=w, **params)
+    eng = mdr.Engine(c, springs=1024, w_adv=w_adv, k_machine=k, arith=arith)
+    run = eng.run(path, control=control, steps_per_segment=steps)
+    assert len(run) == 1 + (len(path) - 1) * steps
+    same_as_cli(run, cols, names, summary, arith)
+    assert eng.a_max == pytest.approx(summary["a_max"], rel=1e-7)
+
+
+def worn_tip(R, b, r_max, m):
+    """A worn AFM tip: a sphere of radius R cut flat at the apex (a flat of
+    radius b), sampled at m radii."""
+    r = np.linspace(0.0, r_max, m)
+    f = np.where(r < b, 0.0, np.sqrt(R**2 - b**2) - np.sqrt(np.maximum(R**2 - r**2, 0.0)))
+    return r, f
+
+
+@pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
+@pytest.mark.parametrize("control", ["grips", "load", "machine"])
+def test_tip_equals_cli(cli, tmp_path, control, arith):
+    r, f = worn_tip(20e-9, 6e-9, 18e-9, 121)
+    path_file = tmp_path / "tip.csv"
+    path_file.write_text("r,f\n" + "".join("%.17g,%.17g\n" % rf for rf in zip(r, f)))
+    E, w, w_adv, k = 1e9, 0.05, 0.02, 0.2
+    path = {"grips": [-1e-9, 1.5e-9, -2e-9], "load": [0, 5e-9, -40e-9], "machine": [-2e-9, 2e-9, -150e-9]}[control]
+    args = ["--profile", "table", "--file", str(path_file), "--E", fmt(E), "--w", fmt(w), "--w-adv", fmt(w_adv),
+            "--control", control, "--arith", arith, "--springs", "512", "--path", ",".join(map(fmt, path)),
+            "--steps-per-segment", "900", "--k-machine", fmt(k)]
+    cols, names, summary, rc = run_cli(cli, args)
+    assert rc == 0, summary
+    eng = mdr.Engine.from_tip(r, f, E=E, w=w, springs=512, w_adv=w_adv, k_machine=k, arith=arith)
+    if arith == "q31" and control == "machine":
+        # after the pull-off (z = -84 nm) the free body's d follows z to the
+        # end of q31's int32 (4 D0 = 119 nm): the CLI saturates there and
+        # warns, the package refuses that tick; every tick before it is the CLI's
+        with pytest.raises(mdr.Error) as err:
+            eng.run(path, control=control, steps_per_segment=900)
+        run = err.value.partial
+        assert err.value.status == "MDR_E_OVERFLOW" and "saturated" in summary["stderr"]
+        assert cols[1][len(run)] == -4 * eng.q31_units["D0"] < cols[1][len(run) - 1]
+        same_as_cli(run, cols, names, summary, arith, prefix=True)
+    else:
+        run = eng.run(path, control=control, steps_per_segment=900)
+        same_as_cli(run, cols, names, summary, arith)
+    assert run.pull_off is not None and run.pull_off.F0 < 0
+
+
+@pytest.mark.parametrize("arith", ["f64", "q31"])
+def test_many_events_equal_cli(cli, arith):
+    """More events than the first event buffer holds (64): 40 approach-
+    retract cycles of a wavy profile with its jumps; every event as the CLI's."""
+    path = [0.0] + [1e-6, -1e-6] * 40
+    scene = ("wavy", dict(R=10e-6, h=1.5e-8, lam=5e-7), 1e6, 0.05, 0.05)
+    profile, params, E, w, w_adv = scene
+    cols, names, summary, rc = run_cli(cli, cli_args(profile, params, E, w, w_adv, 0, arith, 1024, path, "grips", 50))
+    assert rc == 0
+    run = mdr.Engine(mdr.Contact(profile, E=E, w=w, **params), springs=1024, w_adv=w_adv,
+                     arith=arith).run(path, control="grips", steps_per_segment=50)
+    assert len(run.events) > 200
+    same_as_cli(run, cols, names, summary, arith)
+    assert run.cycles == 40
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32", "q31"])
+def test_jkr_pull_off_through_engine(arith):
+    """Approach with w_adv = w (reversible JKR), retraction to separation:
+    the pull-off is the JKR one, -1.5 pi w R under load, -5/6 pi w R under
+    grips, and Kendall's -sqrt(8 pi a0^3 E* w) for the flat punch."""
+    E, w, R = 1e6, 0.05, 10e-6
+    c = mdr.Contact("paraboloid", E=E, w=w, R=R)
+    for control, path, F in (("load", [0, 3e-6, -3e-6], -1.5 * math.pi * w * R),
+                             ("grips", [0, 0.5e-6, -0.6e-6], -5 / 6 * math.pi * w * R)):
+        run = mdr.Engine(c, springs=128, w_adv=w, arith=arith).run(path, control=control, steps_per_segment=2000)
+        assert within(abs(run.pull_off.F0 / F - 1), ENG[arith], "ENG" + arith), (control, run.pull_off)
+    # a machine of stiffness k: the fold of z = d + F/k (bisection on the closed forms)
+    k = 0.5
+    def dz_da(a):
+        dl = math.sqrt(2 * math.pi * a * w / E)
+        return 2 * a / R - dl / (2 * a) + 2 * E * (2 * a**2 / R - 1.5 * dl) / k
+    lo, hi = (math.pi * w * R**2 / (8 * E)) ** (1 / 3), (9 * math.pi * w * R**2 / (8 * E)) ** (1 / 3)
+    for _ in range(200):
+        lo, hi = ((lo + hi) / 2, hi) if dz_da((lo + hi) / 2) < 0 else (lo, (lo + hi) / 2)
+    a = (lo + hi) / 2
+    d = a**2 / R - math.sqrt(2 * math.pi * a * w / E)
+    F = 2 * E * (a * d - a**3 / (3 * R))
+    run = mdr.Engine(c, springs=128, w_adv=w, k_machine=k, arith=arith).run([0, 2e-6, -12e-6], control="machine",
+                                                                           steps_per_segment=4000)
+    po = run.pull_off
+    assert within(abs(po.F0 / F - 1), ENG[arith], "ENG" + arith), po
+    assert within(abs((po.d0 + po.F0 / k) / (d + F / k) - 1), ENG[arith], "ENG" + arith), po
+    a0 = 1e-6
+    run = mdr.Engine(mdr.Contact("flatpunch", E=E, w=w, a0=a0), springs=64, arith=arith).run(
+        [0, 1e-7, -1e-6], control="grips", steps_per_segment=1000)
+    assert within(abs(run.pull_off.F0 / -math.sqrt(8 * math.pi * a0**3 * E * w) - 1), ENG[arith], "ENG" + arith)
+
+
+def test_dissipated_is_the_loop_area():
+    """The energy the engine books for a completed cycle is the area of its
+    F-d loop, int F dd: here by trapezoids over the run's own ticks, the
+    tick of each event split at its states before and after the jump (the
+    pull-off drops F to 0 at constant d)."""
+    c = mdr.Contact("sphere", E=1e9, w=0.05, R=20e-9)
+    run = mdr.Engine(c, springs=1024, w_adv=0.0).run([-1e-9, 2e-9, -1e-9], control="grips",
+                                                     steps_per_segment=4000)
+    assert run.cycles == 1 and run.dissipated > 0 and [e.kind for e in run.events] == ["contact", "pull-off"]
+    d, F = [run.d[:1]], [run.F[:1]]
+    last = 1
+    for e in run.events:
+        d += [run.d[last:e.step], [e.d0, e.d1]]
+        F += [run.F[last:e.step], [e.F0, e.F1]]
+        last = e.step
+    d, F = np.concatenate(d + [run.d[last:]]), np.concatenate(F + [run.F[last:]])
+    area = float(np.sum(0.5 * (F[1:] + F[:-1]) * np.diff(d)))
+    assert within(abs(run.dissipated / area - 1), LOOP, "LOOP")
+
+
+@pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
+def test_runs_continue_and_reset(arith):
+    """A run continues from where the last ended: two runs give what one run
+    of the joined path gives (the second run's first tick repeats the value
+    the first ended on); reset() starts again like a new engine."""
+    c = mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6)
+    p1, p2 = [0, 1e-6, -2e-6], [-2e-6, 1e-6, -20e-6]
+    eng = mdr.Engine(c, springs=512, w_adv=0.02, k_machine=0.2, arith=arith, a_max=12e-6)
+    r1 = eng.run(p1, control="machine", steps_per_segment=300)
+    assert r1.F[-1] < 0 and eng.state == (r1.a[-1], r1.d[-1], r1.F[-1], True)  # in contact, adhesive
+    r2 = eng.run(p2, control="machine", steps_per_segment=300)
+    one = mdr.Engine(c, springs=512, w_adv=0.02, k_machine=0.2, arith=arith, a_max=12e-6).run(
+        p1 + p2[1:], control="machine", steps_per_segment=300)
+    for k in ("z", "d", "F", "a"):
+        assert np.array_equal(np.concatenate([getattr(r1, k), getattr(r2, k)[1:]]), getattr(one, k))
+    assert r1.dissipated + r2.dissipated == pytest.approx(one.dissipated, rel=1e-12, abs=0)
+    assert eng.cycles == one.cycles == 1 and eng.dissipated == pytest.approx(one.dissipated, rel=1e-12)
+    assert eng.state == (r2.a[-1], r2.d[-1], r2.F[-1], r2.a[-1] > 0)
+    eng.reset()
+    assert eng.state == (0.0, 0.0, 0.0, False) and eng.cycles == 0 and eng.dissipated == 0
+    again = eng.run(p1, control="machine", steps_per_segment=300)
+    assert all(np.array_equal(getattr(again, k), getattr(r1, k)) for k in ("z", "d", "F", "a"))
+
+
+@pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
+def test_machine_base_position(arith):
+    """z = d + F/k_machine on every tick, in contact or not (q31: within
+    ZQ31 = 2 x the sum of the three terms' LSB, 2^-29 of Z0, D0 and F0/k
+    [measured 0.2]; floats: ZREL = 4 ulp of the larger term [measured 1.1])."""
+    c = mdr.Contact("sphere", E=1e9, w=0.05, R=20e-9)
+    k = 0.2
+    eng = mdr.Engine(c, springs=1024, w_adv=0.02, k_machine=k, arith=arith)
+    run = eng.run([-5e-9, 3e-9, -40e-9], control="machine", steps_per_segment=2000)
+    assert run.pull_off is not None
+    err = np.abs(run.z - (run.d + run.F / k))
+    if arith == "q31":
+        u = eng.q31_units
+        lsb = 2.0**-29 * np.array([u["Z0"], u["D0"], u["F0"] / k])
+        assert within(float(np.max(err) / np.sum(lsb)), 2, "ZQ31")
+    else:
+        eps = np.finfo(np.float32 if arith == "f32" else np.float64).eps
+        scale = np.maximum(np.abs(run.d), np.abs(run.F / k))
+        assert within(float(np.max(err / (scale + 1e-300)) / eps), 4, "ZREL")
+
+
+def test_refused_tick_keeps_the_engine():
+    """A tick the engine refuses (the edge beyond the table) raises
+    mdr.Error naming the tick; .partial holds the ticks before it, the
+    engine stays as after the last of them and runs on."""
+    c = mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6)
+    eng = mdr.Engine(c, springs=256, arith="f64", a_max=2e-6)
+    with pytest.raises(mdr.Error) as err:
+        eng.run([0, 1e-6], control="grips", steps_per_segment=100)
+    e = err.value
+    assert e.status == "MDR_E_OUTSIDE" and e.message == "contact edge beyond the last spring of the table"
+    assert 0 < e.index < 100 and len(e.partial) == e.index and e.value == pytest.approx(e.index * 1e-8)
+    assert "raise a_max" in str(e) and "tick %d" % e.index in str(e)
+    a, d, F, touching = eng.state
+    assert touching and d == e.partial.d[-1] and F == e.partial.F[-1] and a <= 2e-6
+    back = eng.run([e.partial.d[-1], -1e-6], control="grips", steps_per_segment=100)
+    assert back.pull_off is not None

@@ -1,0 +1,214 @@
+"""Every refusal raises mdr.Error with the library's status name and text,
+names the element, tick or path value that failed, and no NaN or infinity
+escapes. Tolerances: none (statuses and texts are compared exactly)."""
+import math
+
+import numpy as np
+import pytest
+
+import mdr
+
+P = dict(E=1e6, w=0.05)
+
+# the library's texts (lib/src/mdr_status.c), written here independently
+TEXT = {
+    "MDR_E_NONFINITE": "input is NaN or infinite",
+    "MDR_E_PARAM": "parameter out of range",
+    "MDR_E_KIND": "unknown profile kind",
+    "MDR_E_RADIUS": "contact radius outside the profile's domain",
+    "MDR_E_POSITION": "radial position outside [0, a)",
+    "MDR_E_CONTROL": "unknown control mode or machine stiffness not > 0",
+    "MDR_E_SINGULAR": "quantity is singular at this point",
+    "MDR_E_OVERFLOW": "result overflows the arithmetic",
+    "MDR_E_OUTSIDE": "contact edge beyond the last spring of the table",
+    "MDR_E_TABLE": "tabulated profile unusable (order, count or g(0))",
+    "MDR_E_SIZE": "number of springs out of range",
+    "MDR_E_NOCONV": "iteration cap reached",
+}
+
+
+def refused(status, fn, *args, index=None, **kw):
+    """fn(*args, **kw) raises mdr.Error with this status and text; returns it."""
+    with pytest.raises(mdr.Error) as err:
+        fn(*args, **kw)
+    e = err.value
+    assert e.status == status and e.message == TEXT[status], str(e)
+    assert isinstance(e, ValueError) and e.code < 0 and status in str(e) and e.message in str(e)
+    if index is not None:
+        assert e.index == index, str(e)
+    return e
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_contact_refusals(arith):
+    refused("MDR_E_KIND", mdr.Contact, "teapot", R=1e-6, **P)
+    for profile, params, status in (
+            ("paraboloid", dict(R=-1e-6), "MDR_E_PARAM"), ("paraboloid", dict(R=0.0), "MDR_E_PARAM"),
+            ("paraboloid", dict(R=math.nan), "MDR_E_NONFINITE"), ("sphere", dict(R=math.inf), "MDR_E_NONFINITE"),
+            ("cone", dict(theta=math.pi / 2), "MDR_E_PARAM"), ("cone", dict(theta=-0.1), "MDR_E_PARAM"),
+            ("powerlaw", dict(C=1.0, n=8.5), "MDR_E_PARAM"), ("powerlaw", dict(C=-1.0, n=2.0), "MDR_E_PARAM"),
+            ("flatpunch", dict(a0=0.0), "MDR_E_PARAM"), ("flattip", dict(R=1e-5, b=-1e-6), "MDR_E_PARAM"),
+            ("wavy", dict(R=1e-5, h=1e-8, lam=0.0), "MDR_E_PARAM"), ("wavy", dict(R=1e-5, h=-1e-8, lam=1e-7),
+                                                                      "MDR_E_PARAM")):
+        refused(status, mdr.Contact, profile, arith=arith, **P, **params)
+    refused("MDR_E_PARAM", mdr.Contact, "paraboloid", R=1e-6, E=0.0, w=0.05, arith=arith)
+    refused("MDR_E_PARAM", mdr.Contact, "paraboloid", R=1e-6, E=1e6, w=-0.01, arith=arith)
+    refused("MDR_E_NONFINITE", mdr.Contact, "paraboloid", R=1e-6, E=1e6, w=math.nan, arith=arith)
+
+
+def test_contact_argument_errors():
+    with pytest.raises(TypeError, match="missing R"):
+        mdr.Contact("paraboloid", **P)
+    with pytest.raises(TypeError, match="unexpected theta"):
+        mdr.Contact("paraboloid", R=1e-6, theta=0.3, **P)
+    with pytest.raises(TypeError):
+        mdr.Contact("paraboloid", R=1e-6)  # E and w are required
+    with pytest.raises(ValueError, match="arith"):
+        mdr.Contact("paraboloid", R=1e-6, arith="q31", **P)
+    with pytest.raises(NotImplementedError, match="from_tip"):
+        mdr.Contact("table", r=[0, 1e-6], f=[0, 1e-9], **P)
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_eq_refusals_name_the_element(arith):
+    c = mdr.Contact("paraboloid", R=10e-6, arith=arith, **P)
+    e = refused("MDR_E_RADIUS", c.eq, [1e-6, 2e-6, -1e-6, 3e-6], index=2)
+    assert e.value == -1e-6 and "element 2 (a = -1e-06)" in str(e)
+    refused("MDR_E_RADIUS", c.eq, 0.0, index=None)
+    refused("MDR_E_NONFINITE", c.eq, [1e-6, math.nan], index=1)
+    e = refused("MDR_E_RADIUS", c.eq, np.array([[1e-6, 2e-6], [3e-6, 0.0]]), index=(1, 1))
+    assert "element (1, 1)" in str(e)
+    refused("MDR_E_NONFINITE", c.eq, [1e-6, 2e-6], d=[0.0, math.inf], index=1)
+    refused("MDR_E_RADIUS", c.eq, [1e-6, -2e-6], d=0.0, index=1)
+    refused("MDR_E_RADIUS", mdr.Contact("sphere", R=1e-6, arith=arith, **P).eq, [0.5e-6, 1e-6], index=1)
+    refused("MDR_E_RADIUS", mdr.Contact("flatpunch", a0=1e-6, arith=arith, **P).eq, 1.5e-6)
+    refused("MDR_E_OVERFLOW", mdr.Contact("flattip", R=1e-5, b=1e-6, arith=arith, **P).eq, [2e-6, 1e-6], index=1)
+    refused("MDR_E_RADIUS", c.equivalent, [1e-6, 0.0], index=1)
+    if arith == "f32":  # beyond float's range: not converted to inf
+        refused("MDR_E_OVERFLOW", c.eq, [1e-6, 1e39], index=1)
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_stress_refusals(arith):
+    c = mdr.Contact("paraboloid", R=10e-6, arith=arith, **P)
+    refused("MDR_E_POSITION", c.stress, 1e-6, [0.0, 0.5e-6, 1e-6], index=2)
+    refused("MDR_E_POSITION", c.stress, 1e-6, -1e-9)
+    refused("MDR_E_RADIUS", c.stress, [1e-6, -1e-6], 0.0, index=1)
+    refused("MDR_E_NONFINITE", c.stress, 1e-6, 0.5e-6, d=math.nan)
+    refused("MDR_E_SINGULAR", mdr.Contact("cone", theta=0.3, arith=arith, **P).stress, 1e-6, [0.5e-6, 0.0], index=1)
+    refused("MDR_E_SINGULAR", mdr.Contact("flattip", R=1e-5, b=1e-6, arith=arith, **P).stress, 2e-6, 1e-6)
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_critical_refusals(arith):
+    c = mdr.Contact("paraboloid", R=10e-6, arith=arith, **P)
+    refused("MDR_E_CONTROL", c.critical, "sideways")
+    refused("MDR_E_CONTROL", c.critical, "machine")  # no k_machine
+    refused("MDR_E_CONTROL", c.critical, "machine", k_machine=-1.0)
+    refused("MDR_E_NONFINITE", c.critical, "machine", k_machine=math.inf)
+    refused("MDR_E_NONFINITE", c.critical, "load", a_start=math.nan)
+    refused("MDR_E_RADIUS", c.critical, "load", a_start=-1e-6)
+    # a power law so close to n = 1/2 and so blunt that its starting radius is out of reach
+    refused("MDR_E_NOCONV", mdr.Contact("powerlaw", C=1e-10, n=0.6, E=1.0, w=1.0, arith=arith).default_start)
+    refused("MDR_E_NOCONV", mdr.Contact("powerlaw", C=1e-10, n=0.6, E=1.0, w=1.0, arith=arith).critical, "load")
+    if arith == "f32":  # beyond float's range: refused, not passed on as inf
+        refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=1e39, **P, arith=arith)
+        refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=1e-6, E=1e300, w=0.05, arith=arith)
+        refused("MDR_E_OVERFLOW", c.critical, "machine", k_machine=1e40)
+
+
+def test_engine_refusals():
+    c = mdr.Contact("paraboloid", R=10e-6, **P)
+    refused("MDR_E_SIZE", mdr.Engine, c, springs=1, a_max=1e-5)
+    refused("MDR_E_SIZE", mdr.Engine, c, springs=16385, a_max=1e-5)
+    refused("MDR_E_SIZE", mdr.Engine, c, springs=100000)
+    refused("MDR_E_SIZE", mdr.Engine, c, springs=-1)
+    refused("MDR_E_SIZE", mdr.Engine, c, springs=100, arith="q31", a_max=1e-5)  # q31: a power of two
+    refused("MDR_E_PARAM", mdr.Engine, c, w_adv=0.1, a_max=1e-5)  # w_adv > w
+    refused("MDR_E_PARAM", mdr.Engine, c, w_adv=-0.01, a_max=1e-5)
+    refused("MDR_E_CONTROL", mdr.Engine, c, k_machine=-1.0, a_max=1e-5)
+    refused("MDR_E_NONFINITE", mdr.Engine, c, k_machine=math.nan, a_max=1e-5)
+    refused("MDR_E_NONFINITE", mdr.Engine, c, a_max=math.nan)
+    refused("MDR_E_RADIUS", mdr.Engine, mdr.Contact("sphere", R=1e-6, **P), a_max=2e-6)
+    with pytest.raises(TypeError):
+        mdr.Engine(c, springs=2.5)
+    with pytest.raises(TypeError):
+        mdr.Engine("paraboloid")
+    with pytest.raises(ValueError, match="arith"):
+        mdr.Engine(c, arith="q15")
+    # the table is built at the first run: its refusals come from there
+    lazy = mdr.Engine(c, springs=1)
+    refused("MDR_E_SIZE", lazy.run, [0, 1e-7], control="grips", steps_per_segment=10)
+
+
+@pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
+def test_run_refusals(arith):
+    c = mdr.Contact("paraboloid", R=10e-6, **P)
+    eng = mdr.Engine(c, springs=256, arith=arith, a_max=5e-6)
+    refused("MDR_E_CONTROL", eng.run, [0, 1e-7], control="sideways", steps_per_segment=10)
+    e = refused("MDR_E_CONTROL", eng.run, [0, 1e-7], control="machine", steps_per_segment=10, index=0)
+    assert len(e.partial) == 0
+    refused("MDR_E_PARAM", eng.run, [0.0], control="grips", steps_per_segment=10)
+    refused("MDR_E_PARAM", eng.run, [[0, 1e-7]], control="grips", steps_per_segment=10)
+    refused("MDR_E_PARAM", eng.run, [0, 1e-7], control="grips", steps_per_segment=0)
+    refused("MDR_E_PARAM", eng.run, [0, 1e-7], control="grips", steps_per_segment=2.0)
+    for bad in (math.nan, math.inf, -math.inf):
+        e = refused("MDR_E_NONFINITE", eng.run, [0, 1e-7, bad, 0], control="grips", steps_per_segment=10, index=2)
+        assert "path[2]" in str(e)
+    assert eng.state == (0.0, 0.0, 0.0, False)  # a refused path moves nothing
+    if arith == "f32":
+        refused("MDR_E_OVERFLOW", eng.run, [0, 1e39], control="load", steps_per_segment=10, index=1)
+        refused("MDR_E_OVERFLOW", mdr.Engine, c, k_machine=1e40, arith=arith, a_max=5e-6)
+    if arith == "q31":
+        # beyond the steps' documented input range, 2 units: refused, not saturated
+        u = eng.q31_units
+        for ctl, unit in (("grips", u["D0"]), ("load", u["F0"])):
+            e = refused("MDR_E_OVERFLOW", eng.run, [0, -2.01 * unit], control=ctl, steps_per_segment=10, index=1)
+            assert "q31 takes |value| <= 2 units" in str(e)
+        assert eng.run([0, -2 * u["F0"]], control="load", steps_per_segment=10).F[-1] == 0.0
+    # a path without a table yet: its NaN is refused before the extent is taken from it
+    refused("MDR_E_NONFINITE", mdr.Engine(c, arith=arith).run, [0, math.nan], control="grips",
+            steps_per_segment=10, index=1)
+
+
+@pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
+def test_tip_refusals(arith):
+    r = np.linspace(0, 1e-6, 11)
+    f = r**2 / 2e-5
+    kw = dict(E=1e6, w=0.05, springs=64, arith=arith)
+    refused("MDR_E_TABLE", mdr.Engine.from_tip, r + 1e-8, f, **kw)  # r[0] != 0
+    refused("MDR_E_TABLE", mdr.Engine.from_tip, r[::-1], f, **kw)
+    refused("MDR_E_TABLE", mdr.Engine.from_tip, r[:2], f[:2], **kw)
+    refused("MDR_E_TABLE", mdr.Engine.from_tip, r, f[:5], **kw)
+    refused("MDR_E_TABLE", mdr.Engine.from_tip, np.zeros(70000), np.zeros(70000), **kw)
+    f2 = f.copy()
+    f2[4] = math.nan
+    refused("MDR_E_NONFINITE", mdr.Engine.from_tip, r, f2, **kw)
+    refused("MDR_E_SIZE", mdr.Engine.from_tip, r, f, E=1e6, w=0.05, springs=1, arith=arith)
+    refused("MDR_E_PARAM", mdr.Engine.from_tip, r, f, E=1e6, w=0.05, w_adv=1.0, arith=arith)
+
+
+PROFILES = [("paraboloid", dict(R=1e-6)), ("cone", dict(theta=0.4)), ("powerlaw", dict(C=3e4, n=3.0)),
+            ("flatpunch", dict(a0=1e-6)), ("sphere", dict(R=1e-6)), ("flattip", dict(R=1e-6, b=1e-7)),
+            ("wavy", dict(R=1e-6, h=1e-9, lam=5e-8))]
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+@pytest.mark.parametrize("profile,params", PROFILES)
+def test_no_silent_nan(arith, profile, params):
+    """Over radii and depths from 1e-30 m to 1e30 m (and their negatives),
+    every scalar call either raises mdr.Error or returns finite numbers."""
+    c = mdr.Contact(profile, arith=arith, **P, **params)
+    xs = np.concatenate([-np.geomspace(1e-30, 1e30, 61), [0.0], np.geomspace(1e-30, 1e30, 121)])
+    answered = 0
+    for a in xs:
+        for call in (lambda: c.eq(a), lambda: c.eq(a, d=-a), lambda: c.stress(a, 0.5 * a),
+                     lambda: c.equivalent(a)):
+            try:
+                out = call()
+            except mdr.Error:
+                continue
+            values = [out] if isinstance(out, float) else [getattr(out, k) for k in out.__slots__]
+            assert all(np.isfinite(v) for v in values if not isinstance(v, bool)), (a, out)
+            answered += 1
+    assert answered > 100
