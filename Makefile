@@ -43,7 +43,7 @@ LIB_SRC := $(MDR_SRC_ALL)
 LIB_DEPS := $(MDR_DEPS) $(wildcard lib/src/*.c port/*/mdr_port.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: mutate mutate-quick matrix lint fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: step-cost mutate mutate-quick matrix lint fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
@@ -238,6 +238,22 @@ $(B)/tgt-%/bench_target.elf: host_tests/target/bench_target.c host_tests/bench_s
 	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
 # the M4F also counts the rows of the benchmark matrix
 BENCH_TGT_m4 := -DBENCH_MATRIX
+# Instructions per tick of every engine, arithmetic, core and cycle
+# (host_tests/target/step_cost.c: QEMU -icount shift=7, exact counts per
+# tick), one CSV line each: engine,arith,core,cycle,mean,max,separated,
+# pinned,moving; written to $(B)/bench/step_cost.csv (make bench runs it).
+STEPCOST_CORE_m4 := m4f
+STEPCOST_CORE_m3 := m3
+$(B)/tgt-%/step_cost.elf: host_tests/target/step_cost.c host_tests/bench_scene.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
+	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(STEPCOST_CORE_$*)"' $(TGT_TEST_CFLAGS) $< \
+	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
+step-cost: $(B)/tgt-m4/step_cost.elf $(B)/tgt-m3/step_cost.elf
+	@mkdir -p $(B)/bench
+	@for c in m4 m3; do port/cortex-m/run-qemu -M $$( [ $$c = m4 ] && echo $(QEMU_m4) || echo $(QEMU_m3) ) -shift 7 \
+	  -t 600 $(B)/tgt-$$c/step_cost.elf > $(B)/bench/step_cost_$$c.log || { cat $(B)/bench/step_cost_$$c.log; exit 1; }; done
+	@{ grep -h '^engine,' $(B)/bench/step_cost_m4.log; grep -hv '^engine,\|^#' $(B)/bench/step_cost_m4.log $(B)/bench/step_cost_m3.log; } \
+	  > $(B)/bench/step_cost.csv
+	@grep -h '^#' $(B)/bench/step_cost_m4.log $(B)/bench/step_cost_m3.log; cat $(B)/bench/step_cost.csv
 # The benchmark matrix (host_tests/bench_matrix.c): time and error on the
 # host, instructions from callgrind (one dump per row, divided by the row's
 # evaluations) and from the M4F run above; CSV, Markdown and the plot are

@@ -197,7 +197,7 @@ static int engine_cycles(const char *outdir)
             mdr_critical_f32(&c, MDR_CONTROL_MACHINE, (float)K_CANTILEVER, a0, &cr) == MDR_OK) {
             printf("  pull-off %.4f nN (mdr_critical through the cantilever: %.4f nN); "
                    "dissipated in the cycle %.4g aJ\n",
-                   (double)o.F0 * 1e9, (double)cr.F * 1e9, (double)e.last_cycle * 1e18);
+                   (double)o.F0 * 1e9, (double)cr.F * 1e9, (double)e.en.last_cycle * 1e18);
         }
     }
     if (close_csv(csv, path) != 0) {

@@ -32,9 +32,9 @@
 
 #define REPEAT 7
 
-static mdr_node_f32 n32[4097];
-static mdr_node_f64 n64[4097];
-static mdr_node_q31 nq[4097];
+static mdr_node_f32 n32[MDR_TABLE_NODES(4096)];
+static mdr_node_f64 n64[MDR_TABLE_NODES(4096)];
+static mdr_node_q31 nq[MDR_TABLE_NODES(4096)];
 static float in_f32[STEPS + 1];
 static double in_f64[STEPS + 1];
 static int32_t in_q31[STEPS + 1];

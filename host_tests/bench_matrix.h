@@ -59,9 +59,9 @@ typedef struct {
     long nradii;   /* radii of the closed-form rows */
 } bm_scene;
 
-static mdr_node_f32 bm_n32[BM_NMAX + 1];
-static mdr_node_f64 bm_n64[BM_NMAX + 1];
-static mdr_node_q31 bm_nq[BM_NMAX + 1];
+static mdr_node_f32 bm_n32[MDR_TABLE_NODES(BM_NMAX)];
+static mdr_node_f64 bm_n64[MDR_TABLE_NODES(BM_NMAX)];
+static mdr_node_q31 bm_nq[MDR_TABLE_NODES(BM_NMAX)];
 static float bm_in32[BM_STEPS + 1];
 static double bm_in64[BM_STEPS + 1];
 static int32_t bm_inq[BM_STEPS + 1];

@@ -27,8 +27,8 @@ static void mix(int64_t v)
 
 int main(void)
 {
-    static mdr_node_f64 nf[257];
-    static mdr_node_q31 nq[257];
+    static mdr_node_f64 nf[MDR_TABLE_NODES(256)];
+    static mdr_node_q31 nq[MDR_TABLE_NODES(256)];
     static const struct {
         uint8_t kind;
         double p[3], E, w, L;

@@ -284,9 +284,9 @@ static void crit_pair(const scene *s, const mdr_contact_f32 *c32, const mdr_cont
 #define NSPR 64
 static void engine_cycle(const scene *s, const mdr_contact_f32 *c32, const mdr_contact_f64 *c64, double xmax)
 {
-    static mdr_node_f32 n32[NSPR + 1];
-    static mdr_node_f64 n64[NSPR + 1];
-    static mdr_node_q31 nq[NSPR + 1];
+    static mdr_node_f32 n32[MDR_TABLE_NODES(NSPR)];
+    static mdr_node_f64 n64[MDR_TABLE_NODES(NSPR)];
+    static mdr_node_q31 nq[MDR_TABLE_NODES(NSPR)];
     mdr_table_f32 t32;
     mdr_table_f64 t64;
     mdr_table_q31 tq;

@@ -93,7 +93,7 @@ j=$($MDR cycle --profile table --file "$TMP/tip.csv" --E 1e6 --w 0.05 --control 
 near "$(key "$j" pull_off_F)" -2.35619449019e-6 1e-9 && ok || bad "tabulated paraboloid pull-off: $j"
 $MDR table --profile table --file "$TMP/tip.csv" --springs 16 --name my_tip >"$TMP/t.c" || bad "table exit"
 grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad "table C output"
-[ "$(grep -c '^    {' "$TMP/t.c")" -eq 17 ] && ok || bad "table: 17 nodes for 16 springs"
+[ "$(grep -c '^    {' "$TMP/t.c")" -eq 19 ] && ok || bad "table: 17 nodes and 2 of block bounds for 16 springs"
 # outside the table: exit 1 with a message
 $MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>&1
 [ $? -eq 1 ] && ok || bad "cycle beyond the table exits 1"
@@ -162,7 +162,7 @@ done
 expect2 table --profile table --file "$TMP/bad.csv" --springs 16
 printf '# tip\r\nr,f\r\n\r\n0, 0\r\n# mid\r\n1e-6 ,5e-14\r\n2e-6,2e-13\r\n3e-6,4.5e-13' >"$TMP/ok.csv"
 $MDR table --profile table --file "$TMP/ok.csv" --springs 8 --name crlf >"$TMP/crlf.c" &&
-    [ "$(grep -c '^    {' "$TMP/crlf.c")" -eq 9 ] && ok || bad "tip file with comments, CRLF, no final newline"
+    [ "$(grep -c '^    {' "$TMP/crlf.c")" -eq 11 ] && ok || bad "tip file with comments, CRLF, no final newline"
 expect2 table $P
 expect2 table --profile paraboloid --R 1e-5 --a-max 1e-6 --name 9lives
 expect2 eq --profile table --file "$TMP/tip.csv" --E 1 --w 1 --a 1

@@ -79,8 +79,8 @@ extern const mdr_table_f32 gen_tip;
 #define JW 0.05
 #define PI_ M_PI
 
-static mdr_node_f64 nodes64[MDR_SPRINGS_MAX + 1];
-static mdr_node_f32 nodes32[MDR_SPRINGS_MAX + 1];
+static mdr_node_f64 nodes64[MDR_TABLE_NODES(MDR_SPRINGS_MAX)];
+static mdr_node_f32 nodes32[MDR_TABLE_NODES(MDR_SPRINGS_MAX)];
 
 static void table64(mdr_table_f64 *t, uint8_t kind, const double p[3], uint16_t n, double x_max)
 {
@@ -181,7 +181,7 @@ static void paraboloid_pull_off(void **st)
         rel_le(po.F0, Fl, 0, TOL_X64, "load pull-off F (f64)");
         rel_le(po.d0, dl, 0, 1e-11, "load pull-off d (f64, 12-digit table)");
         assert_int_equal(e.contact, 0);
-        assert_int_equal(e.cycles, 1);
+        assert_int_equal(e.en.cycles, 1);
         assert_int_equal(mdr_engine_init_f32(&f, &t32, (float)JE, (float)JW, (float)wa, 0), MDR_OK);
         run32(&f, MDR_CONTROL_LOAD, 0, 5e-6, 500, &po32);
         assert_true(run32(&f, MDR_CONTROL_LOAD, 5e-6, -5e-6, 2000, &po32));
@@ -217,7 +217,7 @@ static void pull_off_inside_spring_0(void **st)
     const double a_d0 = cbrt(2 * PI_ * JW * JR * JR / JE);
     const double pd[3] = {JR, 0, 0};
     const float pf[3] = {(float)JR, 0, 0};
-    static mdr_node_q31 nq[9];
+    static mdr_node_q31 nq[MDR_TABLE_NODES(8)];
     mdr_table_f64 t64;
     mdr_table_f32 t32;
     mdr_table_q31 tq;
@@ -442,9 +442,9 @@ static void oracle_cycles(void **st)
                 rel_le(fmin(o32.d - (g - dw), 0) + fmax(o32.d - (g - da), 0), 0, tb, 1, "band (f32)");
             }
         }
-        assert_int_equal(e.cycles, 1);
-        assert_int_equal(f.cycles, 1);
-        assert_true(e.dissipated > 0);
+        assert_int_equal(e.en.cycles, 1);
+        assert_int_equal(f.en.cycles, 1);
+        assert_true(e.en.dissipated > 0);
     }
 }
 
@@ -468,7 +468,7 @@ static void energy_jkr_cycle(void **st)
     assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, 0.0, 0), MDR_OK);
     run64(&e, MDR_CONTROL_GRIPS, 0, dmax, 20000, &o, NULL);
     run64(&e, MDR_CONTROL_GRIPS, dmax, -dmax, 20000, &o, NULL);
-    assert_int_equal(e.cycles, 1);
+    assert_int_equal(e.en.cycles, 1);
     /* loading: int_0^dmax 4/3 E sqrt(R) d^1.5 dd */
     Wl = 4.0 / 3.0 * JE * sqrt(JR) * pow(dmax, 2.5) / 2.5;
     /* pinned unloading from dmax at a = sqrt(R dmax) until d = D(a1) */
@@ -488,15 +488,15 @@ static void energy_jkr_cycle(void **st)
         }
     }
     want = Wl + Wu;
-    rel_le(e.dissipated, want, 0, TOL_ENERGY, "dissipated energy of a JKR grips cycle");
-    rel_le(e.last_cycle, want, 0, TOL_ENERGY, "last cycle energy");
+    rel_le(e.en.dissipated, want, 0, TOL_ENERGY, "dissipated energy of a JKR grips cycle");
+    rel_le(e.en.last_cycle, want, 0, TOL_ENERGY, "last cycle energy");
     /* touching again is a re-contact; a second identical cycle dissipates the same */
     assert_int_equal(mdr_engine_step_d_f64(&e, 1e-12, &o), MDR_OK);
     assert_int_equal(o.event, MDR_EV_RECONTACT);
     run64(&e, MDR_CONTROL_GRIPS, 1e-12, dmax, 20000, &o, NULL);
     run64(&e, MDR_CONTROL_GRIPS, dmax, -dmax, 20000, &o, NULL);
-    assert_int_equal(e.cycles, 2);
-    rel_le(e.last_cycle, want, 0, TOL_ENERGY, "second cycle energy");
+    assert_int_equal(e.en.cycles, 2);
+    rel_le(e.en.last_cycle, want, 0, TOL_ENERGY, "second cycle energy");
 }
 
 /* Without adhesion the contact peels smoothly to a = 0 (event SEPARATION,
@@ -520,8 +520,8 @@ static void non_adhesive_cycle(void **st)
         seps += o.event == MDR_EV_SEPARATION;
     }
     assert_int_equal(seps, 1);
-    assert_int_equal(e.cycles, 1);
-    rel_le(e.dissipated, 0.0, Wl, 2e-9, "Hertz cycle dissipates nothing");
+    assert_int_equal(e.en.cycles, 1);
+    rel_le(e.en.dissipated, 0.0, Wl, 2e-9, "Hertz cycle dissipates nothing");
 }
 
 /* ------------------------------------------------------ wavy (seed 4.54) */

@@ -49,7 +49,7 @@
 #define TOL_LAND 2e-8
 #define TOL_PO_GRIPS 5e-7
 
-static mdr_node_f64 nodes[4097];
+static mdr_node_f64 nodes[MDR_TABLE_NODES(4096)];
 
 typedef struct {
     const char *name;
@@ -119,7 +119,7 @@ static void converge(const scene *sc, double *order_F, double *order_po)
                 worst = fmax(worst, fabs(o.F - Fr));
             }
         }
-        assert_int_equal(e.cycles, 1);
+        assert_int_equal(e.en.cycles, 1);
         Ns[k] = n;
         eF[k] = worst / fmax(Fmax, fabs(rc.F));
         ePo[k] = fabs(po.F0 - rc.F) / fabs(rc.F);

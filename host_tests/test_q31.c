@@ -74,8 +74,8 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, q31, the spring engine and every profile")
 #define NSPR 1024
 #define NCHECK 96
 
-static mdr_node_f64 nf[NSPR + 1];
-static mdr_node_q31 nq[NSPR + 1];
+static mdr_node_f64 nf[MDR_TABLE_NODES(NSPR)];
+static mdr_node_q31 nq[MDR_TABLE_NODES(NSPR)];
 
 /* the f64 table of a scene, N = NSPR */
 static void build(const scene *sc, mdr_table_f64 *t)
@@ -250,10 +250,10 @@ static void errors(void **st)
     mdr_engine_q31 q, q0;
     mdr_step_q31 o;
     mdr_contact_f64 c;
-    static mdr_node_f64 n100[101];
-    static mdr_node_q31 nq100[101];
-    static mdr_node_f64 n128[129];
-    static mdr_node_q31 nq128[129];
+    static mdr_node_f64 n100[MDR_TABLE_NODES(100)];
+    static mdr_node_q31 nq100[MDR_TABLE_NODES(100)];
+    static mdr_node_f64 n128[MDR_TABLE_NODES(128)];
+    static mdr_node_q31 nq128[MDR_TABLE_NODES(128)];
     const double pd[3] = {1e-6, 0, 0};
     (void)st;
     assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, pd, 1e6, 0.01), MDR_OK);

@@ -174,7 +174,7 @@ static void compare_profile(uint8_t kind, double p0, double x_max)
             assert_true(skipped <= 1);
             printf("  kind %u control %d w_adv/w %.1f: F scene-engine %.2e, f32-f64 %.2e; dissipated %.6e J "
                    "(engine %.6e)\n",
-                   kind, ctl, w_adv / W, e64, e32, en.dissipated, eng.dissipated);
+                   kind, ctl, w_adv / W, e64, e32, en.dissipated, eng.en.dissipated);
             {
                 char what[96];
                 snprintf(what, sizeof what, "kind %u control %d: F scene f64 - engine f64", kind, ctl);
@@ -182,9 +182,9 @@ static void compare_profile(uint8_t kind, double p0, double x_max)
                 snprintf(what, sizeof what, "kind %u control %d: F scene f32 - scene f64", kind, ctl);
                 err_le(e32, TOL_32, what);
                 snprintf(what, sizeof what, "kind %u control %d: dissipated scene - engine", kind, ctl);
-                rel_le(en.dissipated, eng.dissipated, 0, TOL_EN, what);
+                rel_le(en.dissipated, eng.en.dissipated, 0, TOL_EN, what);
             }
-            assert_true(en.cycles == eng.cycles);
+            assert_true(en.cycles == eng.en.cycles);
         }
     }
 }

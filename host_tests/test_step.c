@@ -78,9 +78,9 @@ static double dl_cf(double a, double w) { return sqrt(2 * PI_ * a * w / JE); }
 
 /* ------------------------------------------------------ the engines */
 
-static mdr_node_f64 n64[1025];
-static mdr_node_f32 n32[1025];
-static mdr_node_q31 nq[1025];
+static mdr_node_f64 n64[MDR_TABLE_NODES(1024)];
+static mdr_node_f32 n32[MDR_TABLE_NODES(1024)];
+static mdr_node_q31 nq[MDR_TABLE_NODES(1024)];
 
 typedef struct {
     int kind;
@@ -237,10 +237,10 @@ static void eng_energy(const eng *g, double *dissipated, double *last, uint32_t 
 {
     switch (g->kind) {
     case K_F64:
-        *dissipated = g->e64.dissipated, *last = g->e64.last_cycle, *cycles = g->e64.cycles;
+        *dissipated = g->e64.en.dissipated, *last = g->e64.en.last_cycle, *cycles = g->e64.en.cycles;
         break;
     case K_F32:
-        *dissipated = g->e32.dissipated, *last = g->e32.last_cycle, *cycles = g->e32.cycles;
+        *dissipated = g->e32.en.dissipated, *last = g->e32.en.last_cycle, *cycles = g->e32.en.cycles;
         break;
     case K_Q31:
         *dissipated = (double)g->eq.dissipated * g->F0 * g->D0 / 281474976710656.0;
@@ -638,7 +638,7 @@ static void energy_overflow_f32(void **st)
 {
     const float p[3] = {1.0f, 0, 0};
     mdr_contact_f32 c;
-    static mdr_node_f32 nodes[65];
+    static mdr_node_f32 nodes[MDR_TABLE_NODES(64)];
     mdr_table_f32 t;
     mdr_engine_f32 e, keep;
     mdr_step_f32 o;

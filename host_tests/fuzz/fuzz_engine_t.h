@@ -26,7 +26,7 @@ static inline void FZ_SFX(fz_check)(const FZ_SFX(mdr_engine) *e, const FZ_SFX(md
              fz_fin((double)out->a));
     FZ_CHECK(fz_fin((double)out->a0) && fz_fin((double)out->d0) && fz_fin((double)out->F0));
     FZ_CHECK(fz_fin((double)out->a1) && fz_fin((double)out->d1) && fz_fin((double)out->F1));
-    FZ_CHECK(fz_fin((double)e->work) && fz_fin((double)e->dissipated) && fz_fin((double)e->last_cycle));
+    FZ_CHECK(fz_fin((double)e->en.work) && fz_fin((double)e->en.dissipated) && fz_fin((double)e->en.last_cycle));
     FZ_CHECK(e->a >= 0 && (double)e->a <= (double)tab->n * (double)tab->h * (1 + 4 * eps));
     /* the edge lives in t: a = t^2 underflows to 0 for radii below the
      * smallest subnormal (f32 re-contact at d = 1.4e-45 m) */
@@ -129,7 +129,7 @@ static inline void FZ_SFX(fz_scene_step)(FZ_SFX(mdr_scene) *s, int ctl, FZ_T v)
     FZ_CHECK(fz_fin((double)s->en->work) && fz_fin((double)s->en->dissipated));
     FZ_CHECK(s->contact ? s->tau > 0 && o.a >= 0 : s->tau == 0 && o.F == 0 && o.a == 0);
     if (s->contact) {
-        double t = (double)s->tau, q = pow(t, 2.0 * s->n - 1.0), d = (double)s->dh;
+        double t = (double)s->tau, q = pow(t, 2.0 * s->n - 1.0), d = (double)s->d / (double)s->Ds;
         double gw = t * (q - (double)s->gw), ga = t * (q - (double)s->ga);
         double tol = FZ_BAND_ULPS * eps * (t * q + t * (double)s->gw + fabs(d)) + 16 * eps * (2.0 * s->n * t * q);
         FZ_CHECK(d >= gw - tol && d <= ga + tol);

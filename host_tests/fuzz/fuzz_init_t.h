@@ -26,8 +26,8 @@ typedef struct {
 
 static void FZ_SFX(fz_init)(const fz_scene *s)
 {
-    static FZ_SFX(mdr_node) nodes[NMAX + 1];
-    static mdr_node_q31 nq[NMAX + 1];
+    static FZ_SFX(mdr_node) nodes[MDR_TABLE_NODES(NMAX)];
+    static mdr_node_q31 nq[MDR_TABLE_NODES(NMAX)];
     const FZ_T p[3] = {(FZ_T)s->p[0], (FZ_T)s->p[1], (FZ_T)s->p[2]};
     FZ_SFX(mdr_contact) c;
     FZ_SFX(mdr_table) tab;

@@ -15,9 +15,9 @@
 #include "fuzz.h"
 
 #define NMAX 4096
-static mdr_node_f32 n32[NMAX + 1];
-static mdr_node_f64 n64[NMAX + 1];
-static mdr_node_q31 nq[NMAX + 1];
+static mdr_node_f32 n32[MDR_TABLE_NODES(NMAX)];
+static mdr_node_f64 n64[MDR_TABLE_NODES(NMAX)];
+static mdr_node_q31 nq[MDR_TABLE_NODES(NMAX)];
 
 /* a log-uniform value from one byte, 10^lo ... 10^hi */
 static double fz_log8(fz_in *in, double lo, double hi)

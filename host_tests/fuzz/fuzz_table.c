@@ -14,9 +14,9 @@
 #define NMAX 4096
 static double r[PMAX], f[PMAX];
 static float r32[PMAX], f32[PMAX];
-static mdr_node_f64 n64[NMAX + 1];
-static mdr_node_f32 n32[NMAX + 1];
-static mdr_node_q31 nq[NMAX + 1];
+static mdr_node_f64 n64[MDR_TABLE_NODES(NMAX)];
+static mdr_node_f32 n32[MDR_TABLE_NODES(NMAX)];
+static mdr_node_q31 nq[MDR_TABLE_NODES(NMAX)];
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -39,8 +39,8 @@
 #endif
 #define PAINT 4096 /* bytes of stack painted below the caller's frame */
 
-static mdr_node_f32 n32[4097];
-static mdr_node_q31 nq[4097];
+static mdr_node_f32 n32[MDR_TABLE_NODES(4096)];
+static mdr_node_q31 nq[MDR_TABLE_NODES(4096)];
 static float in_f32[STEPS + 1];
 static int32_t in_q31[STEPS + 1];
 

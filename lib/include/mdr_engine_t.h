@@ -7,7 +7,11 @@
  * spring boundaries x_i = i*h, 0 <= x_i <= x_max = n*h, as g_i, the prefix
  * integral G_i = int_0^{x_i} g, t_i = sqrt(x_i) and, per spring, the excess
  * q_i = int_{x_i}^{x_{i+1}} g - h*(g_i + g_{i+1})/2 of its integral over the
- * trapezoid. Between nodes g is the quadratic through g_i, g_{i+1} whose
+ * trapezoid. After node n, two nodes per block of MDR_TABLE_BLOCK springs
+ * hold bounds over the block (interpolant included): node n+1+2b =
+ * {g: min g, G: min G, t: max g, q: max G}, node n+2+2b = {g: min g', 0, 0,
+ * 0} (g' per unit x); the builders write them, the engine uses them to pass
+ * blocks where the edge cannot stop (MDR_TABLE_NODES sizes the storage). Between nodes g is the quadratic through g_i, g_{i+1} whose
  * integral is exact (q_i), and G its exact integral, so G is continuous,
  * G' = g, and g is reproduced exactly for the paraboloid and the cone; for a
  * smooth g the interpolation error is O(h^3) (measured: README, "Spring
@@ -41,6 +45,31 @@ typedef struct {
     uint8_t wall;                  /**< 1: g = +inf beyond x_n (flat punch: the edge stops there) */
 } MDR_SFX(mdr_table);
 
+/** Energy bookkeeping of every engine of this arithmetic: embedded in a
+ *  spring engine (.en), caller-owned for a scene. The work of the contact
+ *  force, int F dd, is summed per cycle (a cycle ends with a complete
+ *  separation), so its rounding does not grow with the number of cycles. */
+typedef struct {
+    MDR_T work;         /**< int F dd since the last complete separation [J] */
+    MDR_T work_c;       /**< compensation term of that sum (Kahan) */
+    MDR_T dissipated;   /**< energy dissipated over completed cycles [J] */
+    MDR_T dissipated_c; /**< compensation term of that sum (Kahan) */
+    MDR_T last_cycle;   /**< energy dissipated in the last completed cycle [J] */
+    uint32_t cycles;    /**< completed cycles (approach, then complete separation) */
+} MDR_SFX(mdr_energy);
+
+/** The pinned edge of an engine for one control mode (internal: what a tick
+ *  that leaves the edge where it is needs). u in the SI units of that
+ *  control (d, F or z). */
+typedef struct {
+    MDR_T u_lo, u_hi; /**< the edge stays while u_lo <= u <= u_hi */
+    MDR_T kd, d0;     /**< then d = kd u + d0 */
+    MDR_T kF, F0;     /**< and F = kF u + F0 */
+    MDR_T s_lo, s_hi; /**< the solver's edge coordinate per unit of u along the receding
+                           (u < u_lo) and the advancing branch (u > u_hi) at the edge: the
+                           first step of the next move; 0 where there is none (a fold) */
+} MDR_SFX(mdr_pinned);
+
 /** The engine: material, control constants and the contact state.
  *  Caller-owned; fill it with mdr_engine_init_<type>() only, then read it
  *  freely and change it only through the step functions. */
@@ -58,17 +87,16 @@ typedef struct {
     MDR_T Ga;     /**< G(a) [m^2] */
     MDR_T d;      /**< indentation [m] after the last step */
     MDR_T F;      /**< force [N] after the last step */
+    MDR_SFX(mdr_pinned) pin; /**< the pinned edge for control mode `mode` */
+    MDR_T ik_m;   /**< 1/k_m [m/N] (z = d + F/k_m); 0 without machine */
+    MDR_T ih;     /**< 1/h of the table [1/m] */
+    MDR_SFX(mdr_energy) en; /**< energy bookkeeping (with MDR_OUT_ENERGY) */
     uint16_t k;   /**< spring holding the edge: x_k <= a <= x_{k+1} */
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the instance has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* */
-    /* energy bookkeeping */
-    MDR_T work;      /**< int F dd along the path since init [J] */
-    MDR_T work_c;    /**< compensation term of that sum (Kahan) */
-    MDR_T work_sep;  /**< work at the last complete separation [J] */
-    MDR_T dissipated; /**< energy dissipated over completed cycles [J] */
-    MDR_T last_cycle; /**< energy dissipated in the last completed cycle [J] */
-    uint32_t cycles;  /**< completed cycles (approach, then complete separation) */
+    uint8_t outputs; /**< MDR_OUT_* (init: MDR_OUT_ALL | MDR_OUT_ENERGY) */
+    uint8_t mode;    /**< control mode of the pinned edge; 0 exactly when separated */
 } MDR_SFX(mdr_engine);
 
 /** What one step did. All SI; "before"/"after" describe the last jump of
@@ -186,4 +214,15 @@ mdr_status MDR_SFX(mdr_engine_step_z)(MDR_SFX(mdr_engine) *e, MDR_T z, MDR_SFX(m
 
 /** @brief Clear the sticky flags; returns the flags that were set. */
 uint8_t MDR_SFX(mdr_engine_clear_flags)(MDR_SFX(mdr_engine) *e);
+
+/**
+ * @brief Choose what the steps compute: MDR_OUT_* bits (MDR_OUT_FORCE: F and
+ *        d only; MDR_OUT_RADIUS, MDR_OUT_EVENTS, MDR_OUT_ENERGY add a, the
+ *        event fields and z, the energy sums). Fields not asked for are not
+ *        written (out) resp. not updated (e->en); turning MDR_OUT_ENERGY
+ *        back on restarts the sums from zero. A step costs less the less it
+ *        is asked for (README, step cost).
+ * @return MDR_OK, MDR_E_NULL, MDR_E_PARAM (unknown bits)
+ */
+mdr_status MDR_SFX(mdr_engine_outputs)(MDR_SFX(mdr_engine) *e, uint8_t outputs);
 #endif /* MDR_CFG_ENGINE */

@@ -10,12 +10,9 @@
 
 #include "mdr_engine.h"
 
-/** Output groups of a scene (the outputs argument of mdr_scene_init_*()).
- *  The step always solves for d and F; the rest is computed only when asked. */
-#define MDR_OUT_FORCE 0u  /**< out->F and out->d only */
-#define MDR_OUT_RADIUS 1u /**< + out->a */
-#define MDR_OUT_EVENTS 2u /**< + out->z, event, jumps, a0/d0/F0, a1/d1/F1 */
-#define MDR_OUT_ALL 3u    /**< every field of mdr_step_<type> */
+/* Output groups of a scene: MDR_OUT_* of mdr_engine.h (the outputs
+ * argument of mdr_scene_init_*(); MDR_OUT_ENERGY is not used: a scene keeps
+ * its energy in the mdr_energy_<type> given to its init). */
 
 #define MDR_TEMPLATE "mdr_scene_t.h"
 #include "mdr_each_arith.h"

@@ -22,35 +22,33 @@
  * out->a, MDR_OUT_EVENTS adds out->z, out->event, out->jumps and the states
  * before and after a jump (a0, d0, F0, a1, d1, F1). Fields not asked for are
  * not written. Energy (work, dissipated energy per cycle) is kept only in a
- * caller-owned mdr_energy_<type> given to init (NULL: not computed).
+ * caller-owned mdr_energy_<type> (mdr_engine_t.h) given to init (NULL: not
+ * computed).
  */
-
-/** Energy bookkeeping of a scene (optional, caller-owned). */
-typedef struct {
-    MDR_T work;       /**< int F dd along the path since init [J] */
-    MDR_T work_c;     /**< compensation term of that sum (Kahan) */
-    MDR_T work_sep;   /**< work at the last complete separation [J] */
-    MDR_T dissipated; /**< energy dissipated over completed cycles [J] */
-    MDR_T last_cycle; /**< energy dissipated in the last completed cycle [J] */
-    uint32_t cycles;  /**< completed cycles (approach, then complete separation) */
-} MDR_SFX(mdr_energy);
 
 /** A table-free scene. Caller-owned; fill it with an mdr_scene_init_*()
  *  function only, then read it freely and change it only through the step
- *  functions. 56 bytes in f32 on a 32-bit core. */
+ *  functions. Its energy bookkeeping is the mdr_energy_<type> of
+ *  mdr_engine_t.h, caller-owned and optional. */
 typedef struct {
     MDR_T Ds;      /**< depth unit D_s = C a_s^n [m] */
     MDR_T Fs;      /**< force unit 2 E* a_s D_s [N] */
     MDR_T as;      /**< radius unit a_s [m] (a power of two) */
+    MDR_T iDs, iFs; /**< 1/D_s, 1/F_s */
+    MDR_T FsDs;    /**< F_s/D_s */
     MDR_T gw;      /**< dl_w(a)/D_s at a = a_s: sqrt(2 pi w a_s/E*)/D_s */
     MDR_T ga;      /**< the same with w_adv */
     MDR_T kap;     /**< 2E* a_s/k_m, 0 without a machine */
     MDR_T tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine */
+    MDR_T uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
+    MDR_T nu;      /**< n/(n+1) */
     MDR_T tau;     /**< edge: sqrt(a/a_s); 0 when separated */
-    MDR_T dh;      /**< d/D_s after the last step */
+    MDR_T d, F;    /**< indentation [m], force [N] after the last step */
+    MDR_SFX(mdr_pinned) pin; /**< the pinned edge for control mode `mode` (mdr_engine_t.h) */
     MDR_SFX(mdr_energy) *en; /**< energy bookkeeping, or NULL */
     uint8_t n;       /**< exponent of g = C x^n, 1..MDR_POWERLAW_N_MAX */
-    uint8_t outputs; /**< MDR_OUT_* */
+    uint8_t outputs; /**< MDR_OUT_* of init, with MDR_OUT_ENERGY when en is kept */
+    uint8_t mode;    /**< control mode of the pinned edge; 0 exactly when separated */
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the scene has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* (MDR_FLAG_NOCONV) */
@@ -114,4 +112,8 @@ mdr_status MDR_SFX(mdr_scene_step_F)(MDR_SFX(mdr_scene) *s, MDR_T F, MDR_SFX(mdr
 /** @brief One tick with the base position z = d + F/k_m [m] held; see
  *  step_d(). MDR_E_CONTROL when the scene has no machine (k_m = 0). */
 mdr_status MDR_SFX(mdr_scene_step_z)(MDR_SFX(mdr_scene) *s, MDR_T z, MDR_SFX(mdr_step) *out);
+
+/** @brief Clear the sticky flags; returns the flags that were set (0 for a
+ *  NULL scene). */
+uint8_t MDR_SFX(mdr_scene_clear_flags)(MDR_SFX(mdr_scene) *s);
 #endif /* MDR_CFG_SCENE */

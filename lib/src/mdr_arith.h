@@ -10,6 +10,9 @@
  *   MDR_UINT       unsigned integer of the same width (bit access)
  *   MDR_MANT_BITS  stored mantissa bits; MDR_EXP_BIAS exponent bias
  *   MDR_EPS        unit roundoff 2^-p (half an ulp of 1)
+ *   MDR_SQRT_EPS   its square root, rounded to a power of two
+ *   MDR_MAXV, MDR_MINV, MDR_TINY  the largest, the smallest normal and the
+ *                  smallest subnormal positive number
  *   MDR_SQRT(x)    the port's square-root hook, or our own routine
  */
 #ifndef MDR_ARITH_H
@@ -29,8 +32,10 @@
 #define MDR_EXP_BIAS 127
 #define MDR_EXP_MAX 127
 #define MDR_EPS MDR_K(5.9604644775390625e-8)
+#define MDR_SQRT_EPS MDR_K(2.44140625e-4) /* 2^-12 */
 #define MDR_MAXV FLT_MAX
 #define MDR_MINV FLT_MIN
+#define MDR_TINY MDR_K(1.40129846432481707e-45) /* the smallest subnormal, 2^-149 */
 #ifdef MDR_PORT_SQRT_F32
 #define MDR_SQRT(x) MDR_PORT_SQRT_F32(x)
 #else
@@ -45,8 +50,10 @@
 #define MDR_EXP_BIAS 1023
 #define MDR_EXP_MAX 1023
 #define MDR_EPS MDR_K(1.1102230246251565e-16)
+#define MDR_SQRT_EPS MDR_K(1.490116119384765625e-8) /* 2^-26 */
 #define MDR_MAXV DBL_MAX
 #define MDR_MINV DBL_MIN
+#define MDR_TINY MDR_K(4.94065645841246544e-324) /* the smallest subnormal, 2^-1074 */
 #ifdef MDR_PORT_SQRT_F64
 #define MDR_SQRT(x) MDR_PORT_SQRT_F64(x)
 #else

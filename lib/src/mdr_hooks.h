@@ -9,6 +9,12 @@
  *                  to 1 ulp)
  *   MDR_INLINE     qualifiers of the small helpers of the step (default
  *                  `static inline`)
+ *   MDR_FORCE_INLINE  qualifiers of the step's fast paths, which the public
+ *                  step functions inline per control mode to specialise
+ *                  them (default `static inline` with GCC's and Clang's
+ *                  always_inline)
+ *   MDR_NOINLINE   keeps a function out of line (the per-control ticks, so
+ *                  that the step's pinned path has no prologue)
  *   MDR_STEP_FN    attribute of every function on the step path (the public
  *                  step functions and what they call); default: section
  *                  MDR_STEP_SECTION when the build defines it (a string
@@ -26,6 +32,22 @@
 
 #ifndef MDR_INLINE
 #define MDR_INLINE static inline
+#endif
+
+#ifndef MDR_FORCE_INLINE
+#if defined(__GNUC__)
+#define MDR_FORCE_INLINE static inline __attribute__((always_inline))
+#else
+#define MDR_FORCE_INLINE static inline
+#endif
+#endif
+
+#ifndef MDR_NOINLINE
+#if defined(__GNUC__)
+#define MDR_NOINLINE __attribute__((noinline))
+#else
+#define MDR_NOINLINE
+#endif
 #endif
 
 #ifndef MDR_STEP_FN

@@ -120,7 +120,9 @@ class Engine:
         self._x = None
 
     def _alloc(self):
-        n = self.springs + 1
+        # MDR_TABLE_NODES(n): the n + 1 nodes and two of bounds per block
+        blk = lib.MDR_TABLE_BLOCK
+        n = self.springs + 1 + 2 * ((self.springs + blk - 1) // blk)
         n32 = ffi.new("mdr_node_f32[]", n) if self.arith == "f32" else ffi.NULL
         n64 = ffi.new("mdr_node_f64[]", n) if self.arith != "f32" else ffi.NULL
         nq = ffi.new("mdr_node_q31[]", n) if self.arith == "q31" else ffi.NULL

@@ -1,0 +1,314 @@
+/*
+ * host_tests/target/step_cost.c: instructions per tick of every real-time
+ * engine on the emulated Cortex-M4F and Cortex-M3 (make step-cost: QEMU
+ * mps2-an386 / mps2-an385 with -icount shift=7). One CSV line per engine,
+ * arithmetic, core and cycle:
+ *   engine,arith,core,cycle,mean,max,separated,pinned,moving
+ * mean over the cycle's ticks, the worst single tick, and the mean per tick
+ * class: separated (no contact before or after), pinned (in contact, the
+ * edge where it was, no event), moving (the rest: the edge moved, touched,
+ * jumped or let go). Engines: `spring` (N = 1024 springs) and `scene`
+ * (table-free), each force only (MDR_OUT_FORCE: F and d; no radius, z,
+ * events or energy), in f32 and q31 (inputs converted to raw Q2.29 before
+ * counting). Cycles: `grips`, the README's 20 000-tick approach-retract of
+ * the exact sphere (spring engine; the scene runs the paraboloid of the
+ * same radius) under fixed grips (host_tests/bench_scene.h); `afm`, an
+ * approach-retract of a 20 nm paraboloid tip on polystyrene (E* = 3.8 GPa,
+ * w = 0.066 J/m^2, w_adv = w/2) through a 0.2 N/m cantilever, 1 000 ticks
+ * each way, base position from -10 nm to +50 nm and back to -60 nm.
+ *
+ * Counting. With -icount shift=7 QEMU advances its virtual clock by 128 ns
+ * per instruction and the SysTick counts that clock at the board's 25 MHz:
+ * 3.2 counts per instruction (the scale is measured by a loop of known
+ * length, not assumed), so round(counts / scale) is the exact number of
+ * instructions between two reads. A tick's cost is the count around its
+ * call minus the count around a call of an empty function with the same
+ * arguments, plus that function's own two instructions: the instructions
+ * of the step from its entry to its return. Exactly reproducible.
+ */
+#include <stdint.h>
+#include <stdio.h>
+
+#include "mdr.h"
+#include "../bench_scene.h"
+#include "mdr_port.h"
+
+#ifndef BENCH_CORE
+#define BENCH_CORE "m4f"
+#endif
+#define AFM_TICKS 2000
+
+static mdr_node_f32 n32[MDR_TABLE_NODES(1024)];
+static mdr_node_q31 nq[MDR_TABLE_NODES(1024)];
+static float in_f32[STEPS + 1];
+static int32_t in_q31[STEPS + 1];
+
+typedef struct {
+    double sum, cls_sum[3];
+    long n, cls_n[3];
+    uint32_t max;
+} stats;
+
+static double scale; /* SysTick counts per instruction */
+static uint32_t empty_counts;
+
+static uint32_t counts(uint32_t t0, uint32_t t1)
+{
+    return (t0 - t1) & MDR_PORT_CYCLES_MASK; /* SysTick counts down */
+}
+
+__attribute__((noinline)) static mdr_status empty_f32(void *e, float u, void *o)
+{
+    (void)e, (void)u, (void)o;
+    return 0;
+}
+
+/* counts per instruction: 2^16 turns of a 2-instruction loop */
+static double calibrate(void)
+{
+    uint32_t n = 1u << 16, t0 = MDR_PORT_SYST_CVR, t1;
+    __asm__ volatile("1: subs %0, %0, #1\n\tbne 1b" : "+r"(n) : : "cc");
+    t1 = MDR_PORT_SYST_CVR;
+    return (double)counts(t0, t1) / (2.0 * (double)(1u << 16));
+}
+
+static uint32_t instr(uint32_t c)
+{
+    double v = (double)c / scale - (double)empty_counts / scale + 2.0;
+    return v > 0 ? (uint32_t)(v + 0.5) : 0;
+}
+
+static void note(stats *s, uint32_t c, int cls)
+{
+    uint32_t k = instr(c);
+    s->sum += k;
+    s->n++;
+    s->cls_sum[cls] += k;
+    s->cls_n[cls]++;
+    s->max = k > s->max ? k : s->max;
+}
+
+static void print(const char *engine, const char *arith, const char *cycle, const stats *s)
+{
+    int i;
+    printf("%s,%s,%s,%s,%.1f,%lu", engine, arith, BENCH_CORE, cycle, s->sum / (double)s->n,
+           (unsigned long)s->max);
+    for (i = 0; i < 3; i++) {
+        if (s->cls_n[i] > 0) {
+            printf(",%.1f", s->cls_sum[i] / (double)s->cls_n[i]);
+        } else {
+            printf(",");
+        }
+    }
+    printf("\n");
+    printf("# %s %s %s ticks: %ld separated, %ld pinned, %ld moving\n", engine, arith, cycle, s->cls_n[0],
+           s->cls_n[1], s->cls_n[2]);
+}
+
+enum { SEPARATED, PINNED, MOVING };
+
+/* One measured tick: t0, the call, t1, with no other code between. */
+#define TICK(call, cnt)                         \
+    do {                                        \
+        uint32_t t0_ = MDR_PORT_SYST_CVR, t1_;  \
+        st = (call);                            \
+        t1_ = MDR_PORT_SYST_CVR;                \
+        (cnt) = counts(t0_, t1_);               \
+    } while (0)
+
+static void measure_empty(void)
+{
+    mdr_step_f32 o;
+    mdr_status st;
+    uint32_t c, best = 0xFFFFFFFFu;
+    int i;
+    for (i = 0; i < 16; i++) {
+        TICK(empty_f32(&o, 1.0f, &o), c);
+        (void)st;
+        best = c < best ? c : best;
+    }
+    empty_counts = best;
+}
+
+/* the spring engine in f32 / q31 and the scene in f32 over n ticks of
+ * control ctl; cls from the state before and after each tick */
+#define RUN_SPRING(SFX, IN, STEP)                                                    \
+    static int run_spring_##SFX(mdr_engine_##SFX *e, long n, stats *s)               \
+    {                                                                                \
+        long i;                                                                      \
+        mdr_step_##SFX o;                                                            \
+        mdr_status st;                                                               \
+        for (i = 1; i <= n; i++) {                                                   \
+            uint32_t c;                                                              \
+            int was = e->contact;                                                    \
+            uint16_t k0 = e->k;                                                      \
+            __typeof__(e->a) a0 = e->a;                                              \
+            TICK(STEP(e, IN[i], &o), c);                                             \
+            if (st != MDR_OK) {                                                      \
+                printf("step-cost: tick %ld refused (%d)\n", i, st);                 \
+                return 1;                                                            \
+            }                                                                        \
+            note(s, c, !was && !e->contact ? SEPARATED                               \
+                       : was && e->contact && e->a == a0 && e->k == k0 && o.event == 0 \
+                           ? PINNED                                                  \
+                           : MOVING);                                                \
+        }                                                                            \
+        return 0;                                                                    \
+    }
+
+RUN_SPRING(f32, in_f32, mdr_engine_step_d_f32)
+RUN_SPRING(q31, in_q31, mdr_engine_step_d_q31)
+
+static int run_scene_f32(mdr_scene_f32 *e, long n, int machine, stats *s)
+{
+    long i;
+    mdr_step_f32 o;
+    mdr_status st;
+    for (i = 1; i <= n; i++) {
+        uint32_t c;
+        int was = e->contact;
+        float t0 = e->tau;
+        if (machine) {
+            TICK(mdr_scene_step_z_f32(e, in_f32[i], &o), c);
+        } else {
+            TICK(mdr_scene_step_d_f32(e, in_f32[i], &o), c);
+        }
+        if (st != MDR_OK) {
+            printf("step-cost: scene tick %ld refused (%d)\n", i, st);
+            return 1;
+        }
+        note(s, c, !was && !e->contact ? SEPARATED : was && e->contact && e->tau == t0 ? PINNED : MOVING);
+    }
+    return 0;
+}
+
+static int run_spring_z_f32(mdr_engine_f32 *e, long n, stats *s)
+{
+    long i;
+    mdr_step_f32 o;
+    mdr_status st;
+    for (i = 1; i <= n; i++) {
+        uint32_t c;
+        int was = e->contact;
+        float a0 = e->a;
+        TICK(mdr_engine_step_z_f32(e, in_f32[i], &o), c);
+        if (st != MDR_OK) {
+            printf("step-cost: tick %ld refused (%d)\n", i, st);
+            return 1;
+        }
+        note(s, c, !was && !e->contact ? SEPARATED : was && e->contact && e->a == a0 && o.event == 0 ? PINNED : MOVING);
+    }
+    return 0;
+}
+
+static int run_spring_z_q31(mdr_engine_q31 *e, long n, stats *s)
+{
+    long i;
+    mdr_step_q31 o;
+    mdr_status st;
+    for (i = 1; i <= n; i++) {
+        uint32_t c;
+        int was = e->contact;
+        int32_t a0 = e->a;
+        TICK(mdr_engine_step_z_q31(e, in_q31[i], &o), c);
+        if (st != MDR_OK) {
+            printf("step-cost: tick %ld refused (%d)\n", i, st);
+            return 1;
+        }
+        note(s, c, !was && !e->contact ? SEPARATED : was && e->contact && e->a == a0 && o.event == 0 ? PINNED : MOVING);
+    }
+    return 0;
+}
+
+/* the afm cycle's base position at tick i (1 ... AFM_TICKS), metres */
+static double afm_path(long i)
+{
+    long h = AFM_TICKS / 2;
+    return i <= h ? -10e-9 + 60e-9 * (double)i / (double)h : 50e-9 - 110e-9 * (double)(i - h) / (double)h;
+}
+
+int main(void)
+{
+    const float sph[3] = {1e-6f, 0, 0}, tip[3] = {20e-9f, 0, 0};
+    const float Eafm = 3.8e9f, wafm = 0.066f, km = 0.2f;
+    mdr_contact_f32 c;
+    mdr_table_f32 t;
+    mdr_table_q31 tq;
+    long i;
+    mdr_port_cycles_init();
+    scale = calibrate();
+    measure_empty();
+    printf("# %s (QEMU -icount shift=7): %.4f SysTick counts per instruction (measured), "
+           "empty call %.1f instructions of overhead\n",
+           BENCH_CORE, scale, (double)empty_counts / scale);
+    /* grips: the exact sphere, N = 1024, the README's cycle */
+    for (i = 1; i <= STEPS; i++) {
+        in_f32[i] = (float)bench_path(i);
+    }
+    if (mdr_contact_init_f32(&c, MDR_PROFILE_SPHERE, sph, 1e6f, 0.05f) != MDR_OK ||
+        mdr_table_init_profile_f32(&t, n32, 1024, &c, 0.7e-6f) != MDR_OK ||
+        mdr_table_q31_from_f32(&tq, nq, &t) != MDR_OK) {
+        printf("step-cost: setup failed\n");
+        return 1;
+    }
+    {
+        mdr_engine_f32 e;
+        mdr_engine_q31 q;
+        mdr_scene_f32 s;
+        stats a = {0}, b = {0}, d = {0};
+        if (mdr_engine_init_f32(&e, &t, 1e6f, 0.05f, 0.02f, 0) != MDR_OK ||
+            mdr_engine_outputs_f32(&e, MDR_OUT_FORCE) != MDR_OK ||
+            mdr_engine_init_q31_f32(&q, &tq, 1e6f, 0.05f, 0.02f, 0) != MDR_OK ||
+            mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.02f, 0.0f, MDR_OUT_FORCE, NULL) !=
+                MDR_OK) {
+            printf("step-cost: init failed\n");
+            return 1;
+        }
+        for (i = 1; i <= STEPS; i++) {
+            in_q31[i] = mdr_q31_in(&q, MDR_Q_D, in_f32[i]);
+        }
+        if (run_spring_f32(&e, STEPS, &a) || run_spring_q31(&q, STEPS, &b) ||
+            run_scene_f32(&s, STEPS, 0, &d)) {
+            return 1;
+        }
+        printf("engine,arith,core,cycle,mean,max,separated,pinned,moving\n");
+        print("spring", "f32", "grips", &a);
+        print("spring", "q31", "grips", &b);
+        print("scene", "f32", "grips", &d);
+    }
+    /* afm: a 20 nm paraboloid through a 0.2 N/m cantilever */
+    for (i = 1; i <= AFM_TICKS; i++) {
+        in_f32[i] = (float)afm_path(i);
+    }
+    if (mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, tip, Eafm, wafm) != MDR_OK ||
+        mdr_table_init_profile_f32(&t, n32, 1024, &c, 12e-9f) != MDR_OK ||
+        mdr_table_q31_from_f32(&tq, nq, &t) != MDR_OK) {
+        printf("step-cost: afm setup failed\n");
+        return 1;
+    }
+    {
+        mdr_engine_f32 e;
+        mdr_engine_q31 q;
+        mdr_scene_f32 s;
+        stats a = {0}, b = {0}, d = {0};
+        if (mdr_engine_init_f32(&e, &t, Eafm, wafm, 0.5f * wafm, km) != MDR_OK ||
+            mdr_engine_outputs_f32(&e, MDR_OUT_FORCE) != MDR_OK ||
+            mdr_engine_init_q31_f32(&q, &tq, Eafm, wafm, 0.5f * wafm, km) != MDR_OK ||
+            mdr_scene_init_paraboloid_f32(&s, 20e-9f, Eafm, wafm, 0.5f * wafm, km, MDR_OUT_FORCE, NULL) !=
+                MDR_OK) {
+            printf("step-cost: afm init failed\n");
+            return 1;
+        }
+        for (i = 1; i <= AFM_TICKS; i++) {
+            in_q31[i] = mdr_q31_in(&q, MDR_Q_Z, in_f32[i]);
+        }
+        if (run_spring_z_f32(&e, AFM_TICKS, &a) || run_spring_z_q31(&q, AFM_TICKS, &b) ||
+            run_scene_f32(&s, AFM_TICKS, 1, &d)) {
+            return 1;
+        }
+        print("spring", "f32", "afm", &a);
+        print("spring", "q31", "afm", &b);
+        print("scene", "f32", "afm", &d);
+    }
+    return 0;
+}
