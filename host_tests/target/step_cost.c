@@ -47,6 +47,7 @@ typedef struct {
     double sum, cls_sum[3];
     long n, cls_n[3];
     uint32_t max;
+    long imax;
 } stats;
 
 static double scale; /* SysTick counts per instruction */
@@ -85,7 +86,10 @@ static void note(stats *s, uint32_t c, int cls)
     s->n++;
     s->cls_sum[cls] += k;
     s->cls_n[cls]++;
-    s->max = k > s->max ? k : s->max;
+    if (k > s->max) {
+        s->max = k;
+        s->imax = s->n;
+    }
 }
 
 static void print(const char *engine, const char *arith, const char *cycle, const stats *s)
@@ -101,8 +105,8 @@ static void print(const char *engine, const char *arith, const char *cycle, cons
         }
     }
     printf("\n");
-    printf("# %s %s %s ticks: %ld separated, %ld pinned, %ld moving\n", engine, arith, cycle, s->cls_n[0],
-           s->cls_n[1], s->cls_n[2]);
+    printf("# %s %s %s ticks: %ld separated, %ld pinned, %ld moving; the worst is tick %ld\n", engine, arith,
+           cycle, s->cls_n[0], s->cls_n[1], s->cls_n[2], s->imax);
 }
 
 enum { SEPARATED, PINNED, MOVING };

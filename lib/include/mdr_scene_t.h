@@ -42,6 +42,7 @@ typedef struct {
     MDR_T tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine */
     MDR_T uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     MDR_T nu;      /**< n/(n+1) */
+    MDR_T in1;     /**< 1/(n+1) */
     MDR_T tau;     /**< edge: sqrt(a/a_s); 0 when separated */
     MDR_T d, F;    /**< indentation [m], force [N] after the last step */
     MDR_SFX(mdr_pinned) pin; /**< the pinned edge for control mode `mode` (mdr_engine_t.h) */
