@@ -31,7 +31,7 @@ TFLAGS="-std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -O1 -Ilib/include -Iref -Ip
 SUITES="test_config test_unit test_vectors test_engine test_q31 test_scene"
 [ "$mode" = full ] && SUITES=test_config
 
-NOPROF="-DMDR_CFG_PROFILE_CONE=0 -DMDR_CFG_PROFILE_POWERLAW=0 -DMDR_CFG_PROFILE_FLATPUNCH=0 -DMDR_CFG_PROFILE_SPHERE=0 -DMDR_CFG_PROFILE_FLATTIP=0 -DMDR_CFG_PROFILE_WAVY=0"
+NOPROF="-DMDR_CFG_PROFILE_CONE=0 -DMDR_CFG_PROFILE_POWERLAW=0 -DMDR_CFG_PROFILE_FLATPUNCH=0 -DMDR_CFG_PROFILE_SPHERE=0 -DMDR_CFG_PROFILE_FLATTIP=0 -DMDR_CFG_PROFILE_WAVY=0 -DMDR_CFG_PROFILE_TABLE=0"
 NOSPECIAL="-DMDR_CFG_PROFILE_SPHERE=0 -DMDR_CFG_PROFILE_WAVY=0"
 
 configs() {
@@ -62,6 +62,7 @@ configs() {
         echo "-DMDR_USE_CONFIG -Iport/configs/minimal-scene"
         echo "-DMDR_USE_CONFIG -Iport/configs/minimal-q31"
         echo "-DMDR_CFG_ENGINE=0"
+        echo "-DMDR_CFG_PROFILE_TABLE=0 -DMDR_CFG_F32=0"
         echo "-DMDR_CFG_F32=0 -DMDR_CFG_F64=0"
     fi
 }
