@@ -53,6 +53,12 @@ typedef struct {
     MDR_T d;        /**< indentation depth [m] */
     MDR_T F;        /**< normal force [N] */
     uint16_t jumps; /**< intermediate jumps (to a smaller stable radius) before this state */
+    MDR_T F_min;    /**< the most tensile (lowest) force of the equilibrium states the
+                         quasi-static path passes from the start to this one [N]: under
+                         fixed load F itself; under fixed grips of a paraboloid -1.5 pi w R
+                         (F at the load's fold) while F = -5/6 pi w R; 0 or more when
+                         nothing along the path is tensile */
+    MDR_T d_F_min;  /**< the depth of that state [m] */
 } MDR_SFX(mdr_critstate);
 
 /**
