@@ -264,8 +264,8 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             /* the states of the step: after it, and around a jump (the last
              * stable state before it, the state right after it) */
             {
-                double Fs[3] = {(double)o.F, (double)o.F0, (double)o.F1};
-                double ds[3] = {(double)o.d, (double)o.d0, (double)o.d1};
+                const double Fs[3] = {(double)o.F, (double)o.F0, (double)o.F1};
+                const double ds[3] = {(double)o.d, (double)o.d0, (double)o.d1};
                 int k, nk = o.event != MDR_EV_NONE ? 3 : 1;
                 for (k = 0; k < nk; k++) {
                     if (Fs[k] < 0 && (!have_t || Fs[k] < tF)) {
@@ -425,8 +425,11 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
     }
     {
         CLI_T sg;
-        st = A->have_d ? CLI_SFX(mdr_stress_at)(&c, (CLI_T)A->a, (CLI_T)A->d, (CLI_T)A->r, &sg)
-                       : CLI_SFX(mdr_stress)(&c, (CLI_T)A->a, (CLI_T)A->r, &sg);
+        if (A->have_d) {
+            st = CLI_SFX(mdr_stress_at)(&c, (CLI_T)A->a, (CLI_T)A->d, (CLI_T)A->r, &sg);
+        } else {
+            st = CLI_SFX(mdr_stress)(&c, (CLI_T)A->a, (CLI_T)A->r, &sg);
+        }
         if (st != MDR_OK) {
             return cli_fail(A->have_d ? "--a/--d/--r" : "--a/--r", st);
         }

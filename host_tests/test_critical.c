@@ -177,6 +177,43 @@ static void sphere_near_R(void **st)
     }
 }
 
+/* The facts the flattened tip's structure rests on (mdr_critical.inc), in
+ * closed form: s = sqrt(a) g'(a) has its single minimum on (b, inf) at
+ * y_m^2 = (9 + sqrt 57)/12; above it sigma = d ln s/d ln a rises from 0 to
+ * 3/2 and where it is below 2 - sqrt 3 (the machine threshold's largest
+ * slope tau) it rises faster than tau can change (|d tau/d ln a| <= 0.101),
+ * so ln(s/(c phi)) falls, then rises: at most two roots; and the threshold
+ * 0.7475 a* of the seed. */
+static void flattip_structure(void **st)
+{
+    const long double ym = sqrtl((9 + sqrtl(57.0L)) / 12), tmax = 2 - sqrtl(3.0L);
+    long double prev = -1, mind = 1e30L, maxt = 0;
+    (void)st;
+    /* sigma = 1/2 + 4y^2/(2y^2 - 1) - y^2/(y^2 - 1) = 3/2 - 1/((2y^2 - 1)(y^2 - 1)) */
+    for (long double y = ym; y < 100; y *= 1.0001L) {
+        long double y2 = y * y, sig = 1.5L - 1 / ((2 * y2 - 1) * (y2 - 1));
+        long double yh = y * 1.000001L, yh2 = yh * yh;
+        long double sh = 1.5L - 1 / ((2 * yh2 - 1) * (yh2 - 1));
+        long double dsig = (sh - sig) / logl(1.000001L);
+        assert_true(sig > prev); /* rising */
+        prev = sig;
+        if (sig < tmax) {
+            mind = fminl(mind, dsig);
+        }
+    }
+    for (long double x = 1e-8L; x < 1e8L; x *= 1.001L) {
+        long double t = x / (0.5L + 2 * x + 1.5L * x * x);
+        long double dt = x * (0.5L - 1.5L * x * x) / ((0.5L + 2 * x + 1.5L * x * x) * (0.5L + 2 * x + 1.5L * x * x));
+        assert_true(t <= tmax + 1e-15L);
+        maxt = fmaxl(maxt, fabsl(dt));
+    }
+    print_message("flattened tip: y_m = %.6Lf, min d sigma/d ln a where sigma < 0.268: %.2Lf, max |d tau/d ln a| %.4Lf, "
+                  "threshold b/a* = %.6Lf\n",
+                  ym, mind, maxt, powl(2 / (sqrtl(ym) * (2 * ym * ym - 1) / sqrtl(ym * ym - 1)), 2.0L / 3));
+    assert_true(mind > maxt);
+    assert_true(fabsl(powl(2 / (sqrtl(ym) * (2 * ym * ym - 1) / sqrtl(ym * ym - 1)), 2.0L / 3) - 0.7475L) < 1e-4L);
+}
+
 /* ------------------------------------------------------------ hints */
 
 /* any start on the unstable branch (or at the root, or far out) gives the
@@ -728,6 +765,7 @@ int main(void)
         cmocka_unit_test(powerlaw_below_one),
         cmocka_unit_test(issue_powerlaw_example),
         cmocka_unit_test(sphere_near_R),
+        cmocka_unit_test(flattip_structure),
         cmocka_unit_test(starts_are_hints),
         cmocka_unit_test(default_start_is_stable),
         cmocka_unit_test(most_tensile_force),

@@ -438,13 +438,13 @@ static double dom_of(const ref_scene *s)
  * punch), or -1 when there is none (c falls for ever). */
 static double jump_in(const ref_scene *s, struct cctx *c, double a_start)
 {
-    double cstar, a = a_start, an, dom = dom_of(s), rel = 0.002;
+    double cstar, a = a_start, dom = dom_of(s), rel = 0.002;
     int guard = 0;
     c->target = 0.0;
     cstar = c_value(a_start, c);
     c->target = cstar;
     for (;;) {
-        double h = a * rel;
+        double h = a * rel, an;
         rel = rel * 1.03 < 0.05 ? rel * 1.03 : 0.05;
         if (s->kind == MDR_PROFILE_WAVY && s->p[1] > 0 && h > s->p[2] / 64) {
             h = s->p[2] / 64;
