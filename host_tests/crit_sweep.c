@@ -75,6 +75,7 @@ typedef struct {
     ld p0, p1; /* R | theta | C, n | R, b */
     ld E, w, km;
     int ctl;
+    ld k0; /* power law: kappa_n C (set by run()) */
 } scene;
 
 typedef struct {
@@ -116,9 +117,9 @@ static void prof(const scene *s, ld a, ld *g, ld *dg, ld *fna)
 {
     switch (s->kind) {
     case MDR_PROFILE_POWERLAW: {
-        ld n = s->p1, k0 = kappa(n) * s->p0;
+        ld n = s->p1, k0 = s->k0;
         *g = k0 * powl(a, n);
-        *dg = n * k0 * powl(a, n - 1);
+        *dg = n * *g / a;
         *fna = n / (n + 1) * a * *g; /* a (g - hbar) ... F_na = 2E* a hbar */
         break;
     }
@@ -206,7 +207,7 @@ static ld kroot(const scene *s, ld k)
     switch (s->kind) {
     case MDR_PROFILE_POWERLAW: {
         ld n = s->p1;
-        return powl(k * c / (n * kappa(n) * s->p0), 1 / (n - 0.5L)); /* 4.70 */
+        return powl(k * c / (n * s->k0), 1 / (n - 0.5L)); /* 4.70 */
     }
     case MDR_PROFILE_PARABOLOID:
         return powl(k * c * s->p0 / 2, 2.0L / 3); /* 4.34 */
@@ -271,8 +272,8 @@ static void expect(const scene *s, expect_t *e)
     } else {
         /* roots of dz/da between the grips and the load radii; the lowest
          * local minimum of z, counting records from the top */
-        /* below half the grips radius s < c/2 <= c phi: no root there */
-        ld lo = kroot(s, 0.5L) * powl(0.5L, 1 / (s->kind == MDR_PROFILE_POWERLAW ? s->p1 - 0.5L : 1.5L));
+        /* where s = 0.99 c/2 < c/2 <= c phi: no root below */
+        ld lo = kroot(s, 0.5L) * powl(0.99L, 1 / (s->kind == MDR_PROFILE_POWERLAW ? s->p1 - 0.5L : 0.5L));
         ld hi = 2 * kroot(s, 1.5L), best = 0, pa = hi, pq, pv, d, F, vfloor = 0;
         int nrec = 0, N, clamped = 0;
         if (!(lo > hi * 1e-300L)) {
@@ -283,10 +284,12 @@ static void expect(const scene *s, expect_t *e)
             clamped = 1;
             vfloor = -sqrtl(2 * PI_L * s->w / s->E * lo) * (1 + 2 * s->E * lo / s->km);
         }
-        N = (int)fminl(20000, fmaxl(400, 40 * log10l(hi / lo)));
+        N = (int)fminl(4000, fmaxl(400, 20 * log10l(hi / lo)));
         state(s, hi, &pv, &pq, &d, &F);
+        const ld ratio = powl(lo / hi, 1.0L / N);
+        ld ag = hi;
         for (int i = 1; i <= N; i++) {
-            ld a = i == N ? lo : hi * powl(lo / hi, (ld)i / N), qa;
+            ld a = i == N ? lo : (ag *= ratio), qa;
             state(s, a, &v, &qa, &d, &F);
             if ((qa > 0) != (pq > 0)) {
                 ld l = a, h = pa;
@@ -419,7 +422,7 @@ static void run(const scene *s, int f32, double cond)
           inrange(s->w, f32) && inrange(c, f32) && inrange(2 * s->E * e.a * (fabsl(e.d) + dl), f32) &&
           inrange(s->p0, f32) && inrange(s->km, f32) && inrange(1e3L * e.a, f32) && inrange(1e-3L * e.a, f32);
     if (s->kind == MDR_PROFILE_POWERLAW) {
-        ld k0 = kappa(s->p1) * s->p0;
+        ld k0 = s->k0;
         rep = rep && inrange(k0, f32) && inrange(k0 * powl(1e3L * e.a, s->p1), f32) &&
               inrange(k0 * powl(1e-3L * e.a, s->p1), f32);
     }
@@ -440,6 +443,14 @@ static void run(const scene *s, int f32, double cond)
         double a0 = hint[k] * (double)e.a;
         if (k > 0 && s->kind == MDR_PROFILE_SPHERE && !(a0 < (double)s->p0)) {
             a0 = (double)(e.a + (s->p0 - e.a) / 2);
+        }
+        if (k > 0) {
+            /* a hint whose own state leaves the range: a named error is right */
+            ld vs, qs, ds, Fs;
+            state(s, (ld)a0, &vs, &qs, &ds, &Fs);
+            if (!(inrange(vs, f32) && inrange(ds, f32) && inrange(Fs, f32) && inrange(qs, f32))) {
+                continue;
+            }
         }
         if ((k == 1 || k == 2) && s->ctl == MDR_CONTROL_MACHINE && s->kind == MDR_PROFILE_POWERLAW &&
             s->p1 < 0.5L + 0.268L) {
@@ -535,10 +546,12 @@ static void run(const scene *s, int f32, double cond)
     }
 }
 
-static void run_both(const scene *s, double cond)
+static void run_both(const scene *s0, double cond)
 {
-    run(s, 0, cond);
-    run(s, 1, cond);
+    scene s = *s0;
+    s.k0 = s.kind == MDR_PROFILE_POWERLAW ? kappa(s.p1) * s.p0 : 0;
+    run(&s, 0, cond);
+    run(&s, 1, cond);
 }
 
 /* a scene under the three controls; the machine at k_m = 2E* a_load x kf */
@@ -554,6 +567,7 @@ static void controls(scene s, double cond)
             if (s.kind == MDR_PROFILE_FLATTIP) {
                 continue; /* expected values for load and grips */
             }
+            l.k0 = s.kind == MDR_PROFILE_POWERLAW ? kappa(s.p1) * s.p0 : 0;
             al = s.kind == MDR_PROFILE_FLATPUNCH ? s.p0 : kroot(&l, 1.5L);
             for (int i = 0; i < 3; i++) {
                 s.km = 2 * s.E * al * kfs[i];
@@ -571,7 +585,8 @@ static void controls(scene s, double cond)
 int main(int argc, char **argv)
 {
     const int lng = argc > 1 && strcmp(argv[1], "long") == 0;
-    const int nL = lng ? 13 : 4, nE = lng ? 13 : 4, nw = lng ? 13 : 4;
+    const int ng = argc > 2 ? atoi(argv[2]) : (lng ? 13 : 4); /* points per parameter (12 decades) */
+    const int nL = ng, nE = ng, nw = ng;
     static const double nfix[] = {0.6, 0.75, 0.9, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0};
     long total;
     int bad = 0;
