@@ -42,6 +42,7 @@
 MDR_TEST_NOT_APPLICABLE("f32, f64, stress and every profile")
 #else
 #include "test_util.h"
+#include "contact_util.h"
 
 #define REL_CV 1e-11
 #define REL64 1e-12
@@ -49,60 +50,6 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, stress and every profile")
 #define KENDALL 1e-9
 #define WAVY 1e-6
 #define TAB_SPH 1e-5
-#define GUARD 0x5Au
-
-static mdr_contact_f64 mk64(uint8_t kind, double p0, double p1, double p2, double E, double w)
-{
-    mdr_contact_f64 c;
-    double p[3] = {p0, p1, p2};
-    assert_int_equal(mdr_contact_init_f64(&c, kind, p, E, w), MDR_OK);
-    return c;
-}
-
-static mdr_contact_f32 mk32(uint8_t kind, double p0, double p1, double p2, double E, double w)
-{
-    mdr_contact_f32 c;
-    float p[3] = {(float)p0, (float)p1, (float)p2};
-    assert_int_equal(mdr_contact_init_f32(&c, kind, p, (float)E, (float)w), MDR_OK);
-    return c;
-}
-
-static int untouched(const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    for (size_t i = 0; i < n; i++) {
-        if (b[i] != GUARD) {
-            return 0;
-        }
-    }
-    return 1;
-}
-
-/* the critical state from the default start in both arithmetics against
- * (a, d, F); tol32 for f32 */
-static void both(uint8_t kind, double p0, double p1, double p2, double E, double w, uint8_t ctl, double km,
-                 double a, double d, double F, double tol64, double tol32, const char *what)
-{
-    mdr_contact_f64 c64 = mk64(kind, p0, p1, p2, E, w);
-    mdr_contact_f32 c32 = mk32(kind, p0, p1, p2, E, w);
-    mdr_critstate_f64 o;
-    mdr_critstate_f32 of;
-    double a0, dl = sqrt(2 * M_PI * a * w / E), ds = fmax(fabs(d), dl);
-    float a0f;
-    assert_int_equal(mdr_default_start_f64(&c64, &a0), MDR_OK);
-    assert_int_equal(mdr_critical_f64(&c64, ctl, km, a0, &o), MDR_OK);
-    assert_int_equal(mdr_default_start_f32(&c32, &a0f), MDR_OK);
-    assert_int_equal(mdr_critical_f32(&c32, ctl, (float)km, a0f, &of), MDR_OK);
-    print_message("%-34s f64 a %.1e F %.1e d %.1e | f32 a %.1e F %.1e d %.1e\n", what, fabs(o.a - a) / a,
-                  fabs(o.F - F) / fabs(F), fabs(o.d - d) / ds, fabs(of.a - a) / a, fabs(of.F - F) / fabs(F),
-                  fabs(of.d - d) / ds);
-    rel_le(o.a, a, 0, tol64, what);
-    rel_le(o.F, F, 0, tol64, what);
-    rel_le(o.d, d, ds, tol64, what);
-    rel_le(of.a, a, 0, tol32, what);
-    rel_le(of.F, F, 0, tol32, what);
-    rel_le(of.d, d, ds, tol32, what);
-}
 
 /* ------------------------------------------------------------ named */
 
@@ -111,13 +58,13 @@ static void powerlaw_below_one(void **st)
 {
     (void)st;
     /* f32 near n = 1/2: the radius is ill-conditioned by 1/(n - 1/2) */
-    both(MDR_PROFILE_POWERLAW, 1, 0.6, 0, 1, 1, MDR_CONTROL_LOAD, 0, 4118452.7333, 7630.41636019,
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.6, 0, 1, 1, MDR_CONTROL_LOAD, 0, 4118452.7333, 7630.41636019,
          -2618792426.23, REL_CV, 2e-6 / 0.1, "n = 0.6 load (CHECK_VALUES)");
-    both(MDR_PROFILE_POWERLAW, 1, 0.6, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 69.7463586732, -3.48898781902,
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.6, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 69.7463586732, -3.48898781902,
          -2007.58961561, REL_CV, 2e-6 / 0.1, "n = 0.6 grips");
-    both(MDR_PROFILE_POWERLAW, 1, 0.9, 0, 1, 1, MDR_CONTROL_LOAD, 0, 12.4842955703, 5.90446695301,
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.9, 0, 1, 1, MDR_CONTROL_LOAD, 0, 12.4842955703, 5.90446695301,
          -46.5556488168, REL_CV, 2e-6 / 0.4, "n = 0.9 load");
-    both(MDR_PROFILE_POWERLAW, 1, 0.9, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 0.800867934242, -0.996983265699,
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.9, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 0.800867934242, -0.996983265699,
          -2.64749849968, REL_CV, 2e-6 / 0.4, "n = 0.9 grips");
 }
 
@@ -132,7 +79,7 @@ static void issue_powerlaw_example(void **st)
     double F = 2 * E * (n / (n + 1) * kap * C * pow(a, n + 1) - c * pow(a, 1.5));
     (void)st;
     print_message("issue example: a_c = %.6g m (the old default start returned 4e-26 m)\n", a);
-    both(MDR_PROFILE_POWERLAW, C, n, 0, E, w, MDR_CONTROL_LOAD, 0, a, d, F, REL64, 2e-6 / 0.1,
+    crit_both(MDR_PROFILE_POWERLAW, C, n, 0, E, w, MDR_CONTROL_LOAD, 0, a, d, F, REL64, 2e-6 / 0.1,
          "n = 0.6, C = 0.005, E* = 1 GPa");
 }
 
@@ -147,9 +94,9 @@ static void sphere_near_R(void **st)
     float a0f;
     double a0;
     (void)st;
-    both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 5, MDR_CONTROL_LOAD, 0, 0.931509435763, -3.85431932452,
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 5, MDR_CONTROL_LOAD, 0, 0.931509435763, -3.85431932452,
          -7.89129674995, REL_CV, REL32, "sphere w = 5 load, a = 0.93 R");
-    both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 5, MDR_CONTROL_GRIPS, 0, 0.788756074688, -4.13540655475,
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 5, MDR_CONTROL_GRIPS, 0, 0.788756074688, -4.13540655475,
          -6.90880201948, REL_CV, REL32, "sphere w = 5 grips");
     assert_int_equal(mdr_default_start_f32(&c32, &a0f), MDR_OK);
     assert_int_equal(mdr_critical_f32(&c32, MDR_CONTROL_LOAD, 0, a0f, &of), MDR_OK);
