@@ -699,11 +699,13 @@ static void table_errors(void **st)
         assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &o), MDR_E_RADIUS);
         assert_true(untouched(&o, sizeof o));
     }
+#if MDR_CFG_SCENE
     /* the scene of a table is not a monomial */
     {
         mdr_scene_f64 sc;
         assert_int_equal(mdr_scene_init_contact_f64(&sc, &c, 0, 0, MDR_OUT_FORCE, NULL), MDR_E_KIND);
     }
+#endif
 }
 
 int main(void)
