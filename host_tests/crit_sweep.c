@@ -674,7 +674,7 @@ int main(int argc, char **argv)
                r->worst > 0 ? r->where : "");
     }
     bad = failures != 0;
-    printf("%ld calls; bounds: f64 %.0e, f32 %.0e (times cond = max(1, 1/(n - 1/2))); %ld failures\n", total, TOL64,
+    printf("%ld calls; bounds: f64 %.1e, f32 %.1e (times cond = max(1, 1/(n - 1/2))); %ld failures\n", total, TOL64,
            TOL32, failures);
     printf("crit_sweep: %d passed, %d failed\n", bad ? 0 : 1, bad);
     return bad;
