@@ -1,11 +1,16 @@
 /*
  * mdr: command-line front end of libmdr (host only; uses stdio).
  *
- *   mdr eq       <profile> <material> [--arith f32|f64] --a A
+ *   mdr eq       <profile> <material> [--arith f32|f64] --a A [--d D]
+ *                (without --d the equilibrium state at radius A; with it
+ *                the state (A, D) as given, pinned or not: F of that state,
+ *                its K_I and G; d_eq, F_eq the equilibrium's)
  *   mdr critical <profile> <material> --control load|grips|machine
  *                [--k-machine K] [--a-start A]
+ *                (+ max_tensile_F, max_tensile_d: the most tensile force
+ *                of the quasi-static path to the pull-off, and its depth)
  *   mdr curve    <profile> <material> --a-max A --n N
- *   mdr stress   <profile> <material> --a A --r R
+ *   mdr stress   <profile> <material> --a A [--d D] --r R
  *   mdr stress   <profile> <material> --control MODE [--k-machine K] --r S
  *                (at the critical state, r = S * a_c with 0 <= S < 1)
  *   mdr cycle    <profile> <material> --control load|grips|machine
@@ -15,7 +20,9 @@
  *                the controlled variable (d [m], F [N] or z [m]); CSV
  *                step,z,d,F,a,event on stdout, one JSON summary on stderr:
  *                pull_off_F pull_off_d events dissipated (+ cycles, jumps,
- *                springs, a_max, event_list)
+ *                springs, a_max, max_tensile_F, max_tensile_d: the most
+ *                tensile force of the path, before or after any jump, and
+ *                its depth; null if none was tensile, event_list)
  *   mdr table    <profile> [--springs N] --a-max A [--name NAME]
  *                prints the spring table as const C arrays (for flash)
  *
@@ -25,8 +32,9 @@
  *   SI values (converted in double), table prints the q31 nodes (N must be
  *   a power of two).
  *
- *   <profile> also: --profile table --file FILE (CSV r,f in metres; cycle
- *               and table only; the table extends to the last r)
+ *   <profile> also: --profile table --file FILE (CSV r,f in metres, r from
+ *               0 strictly increasing; every command; the profile ends at
+ *               the last r; slopes formed in double, then converted)
  *   --springs N  springs of the table (default 1024, up to MDR_SPRINGS_MAX)
  *   --a-max A    table extent (cycle: default 1.25 x the largest radius the
  *                path can reach, from the closed-form equilibrium)
@@ -51,17 +59,17 @@
 enum { CMD_EQ, CMD_CRITICAL, CMD_CURVE, CMD_STRESS, CMD_CYCLE, CMD_TABLE };
 
 /* --profile table */
-#define KIND_TABLE 0u
+#define KIND_TABLE MDR_PROFILE_TABLE
 
 struct cli_args {
     int cmd;
     uint8_t kind, control;
-    double p[3], E, w, a, r, a_max, a_start, k_m, w_adv;
+    double p[3], E, w, a, r, a_max, a_start, k_m, w_adv, d;
     long n, springs, steps;
-    int f64, q31, have_control, have_a_start, have_amax;
+    int f64, q31, have_control, have_a_start, have_amax, have_d;
     double *path; /* --path values */
     long npath;
-    double *tr, *tf; /* --file samples */
+    double *tr, *tf, *ts; /* --file samples, and their slopes (double) */
     long ntab;
     const char *name, *file;
 };
@@ -277,7 +285,7 @@ int main(int argc, char **argv)
             }
             continue;
         }
-        if (strcmp(f, "--file") == 0 && (A.cmd == CMD_CYCLE || A.cmd == CMD_TABLE)) {
+        if (strcmp(f, "--file") == 0) {
             A.file = argv[++i];
             continue;
         }
@@ -310,9 +318,6 @@ int main(int argc, char **argv)
         return usage_error("missing --profile", NULL);
     }
     if (strcmp(profile, "table") == 0) {
-        if (A.cmd != CMD_CYCLE && A.cmd != CMD_TABLE) {
-            return usage_error("--profile table works with cycle and table only", NULL);
-        }
         if (A.file == NULL) {
             return usage_error("--profile table needs --file FILE", NULL);
         }
@@ -356,6 +361,9 @@ int main(int argc, char **argv)
         } else if (strcmp(f, "--a") == 0 && (c == CMD_EQ || c == CMD_STRESS)) {
             A.a = vals[i];
             have_a = 1;
+        } else if (strcmp(f, "--d") == 0 && (c == CMD_EQ || c == CMD_STRESS)) {
+            A.d = vals[i];
+            A.have_d = 1;
         } else if (strcmp(f, "--r") == 0 && c == CMD_STRESS) {
             A.r = vals[i];
             have_r = 1;
@@ -431,6 +439,9 @@ int main(int argc, char **argv)
         if (!have_r || (have_a == A.have_control)) {
             return usage_error("stress needs --r and either --a or --control", NULL);
         }
+        if (A.have_d && !have_a) {
+            return usage_error("--d needs --a (a state (a, d) as given)", NULL);
+        }
         break;
     }
     if (A.have_control && A.control == MDR_CONTROL_MACHINE && !(A.k_m > 0.0)) {
@@ -442,19 +453,30 @@ int main(int argc, char **argv)
             return usage_error("cannot read r,f pairs from", A.file);
         }
         if (A.ntab > 65535) {
+            free(A.tr);
+            free(A.tf);
             return usage_error("more than 65535 points in", A.file);
+        }
+        A.ts = malloc((size_t)(A.ntab > 1 ? A.ntab - 1 : 1) * sizeof *A.ts);
+        if (A.ts == NULL || tip_slopes(A.tr, A.tf, A.ntab, A.ts) != 0) {
+            free(A.tr);
+            free(A.tf);
+            free(A.ts);
+            return usage_error("r must increase strictly in", A.file);
         }
     }
     if (A.q31 && A.cmd != CMD_CYCLE && A.cmd != CMD_TABLE) {
         free(A.path);
         free(A.tr);
         free(A.tf);
+        free(A.ts);
         return usage_error("--arith q31 works with cycle and table only", NULL);
     }
     rc = A.f64 ? run_f64(&A) : run_f32(&A);
     free(A.path);
     free(A.tr);
     free(A.tf);
+    free(A.ts);
     /* the results are on stdout: a write error (a full disk) fails the run */
     if (fflush(stdout) != 0 || ferror(stdout)) {
         perror("mdr: stdout");

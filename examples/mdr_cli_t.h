@@ -12,52 +12,62 @@ static int CLI_SFX(default_extent)(const struct cli_args *A, const CLI_SFX(mdr_c
     return st == MDR_OK ? 0 : cli_fail("default --a-max", st);
 }
 
-/* The spring table of the scene into malloc'd nodes (freed by the caller). */
+/* The scene's contact. A tabulated profile keeps the samples it points to
+ * in *keep (malloc'd, freed by the caller after the contact's last use):
+ * r and the slopes formed in double by tip_slopes(), then converted
+ * (mdr_host_tip_contact(), shared with the Python package). */
+static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) *c, CLI_T **keep)
+{
+    mdr_status st;
+    *keep = NULL;
+    if (A->kind == KIND_TABLE) {
+        CLI_T *buf = malloc(2 * (size_t)A->ntab * sizeof *buf);
+        if (buf == NULL) {
+            return cli_fail("table", MDR_E_SIZE);
+        }
+        *keep = buf;
+        st = CLI_SFX(mdr_host_tip_contact)(c, A->tr, A->ts, (uint16_t)A->ntab, (CLI_T)A->E, (CLI_T)A->w,
+                                           buf);
+        return st == MDR_OK ? 0 : cli_fail(st == MDR_E_PARAM ? "--E/--w" : A->file, st);
+    }
+    {
+        CLI_T p[3] = {(CLI_T)A->p[0], (CLI_T)A->p[1], (CLI_T)A->p[2]};
+        st = CLI_SFX(mdr_contact_init)(c, A->kind, p, (CLI_T)A->E, (CLI_T)A->w);
+    }
+    return st == MDR_OK ? 0 : cli_fail("profile/material", st);
+}
+
+/* The spring table of the scene into malloc'd nodes (freed by the caller):
+ * from the contact's closed forms, or for a tabulated profile from the same
+ * exact Abel integration (the same nodes as mdr_table_init_gap() in double;
+ * in float from the slopes formed in double). */
 static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab,
                                CLI_SFX(mdr_node) **nodes)
 {
     uint16_t n = (uint16_t)A->springs;
     mdr_status st;
+    CLI_SFX(mdr_contact) c;
+    CLI_T *keep, a_max = (CLI_T)A->a_max;
+    int rc;
     *nodes = malloc(MDR_TABLE_NODES(n) * sizeof **nodes);
     if (*nodes == NULL) {
         return cli_fail("table", MDR_E_SIZE);
     }
-    if (A->kind == KIND_TABLE) {
-        CLI_T *r = malloc((size_t)A->ntab * sizeof *r), *f = malloc((size_t)A->ntab * sizeof *f);
-        long i;
-        if (r == NULL || f == NULL) {
-            free(r);
-            free(f);
-            return cli_fail("table", MDR_E_SIZE);
-        }
-        for (i = 0; i < A->ntab; i++) {
-            r[i] = (CLI_T)A->tr[i];
-            f[i] = (CLI_T)A->tf[i];
-        }
-        st = CLI_SFX(mdr_table_init_gap)(tab, *nodes, n, r, f, (uint16_t)A->ntab);
-        free(r);
-        free(f);
-        if (st != MDR_OK) {
-            return cli_fail(A->file, st);
-        }
-        return 0;
+    rc = CLI_SFX(make_contact)(A, &c, &keep);
+    if (rc != 0) {
+        free(keep);
+        return rc;
     }
-    {
-        CLI_SFX(mdr_contact) c;
-        CLI_T p[3] = {(CLI_T)A->p[0], (CLI_T)A->p[1], (CLI_T)A->p[2]};
-        CLI_T a_max = (CLI_T)A->a_max;
-        int rc;
-        st = CLI_SFX(mdr_contact_init)(&c, A->kind, p, (CLI_T)A->E, (CLI_T)A->w);
-        if (st != MDR_OK) {
-            return cli_fail("profile/material", st);
-        }
-        if (!A->have_amax && (rc = CLI_SFX(default_extent)(A, &c, &a_max)) != 0) {
-            return rc;
-        }
-        st = CLI_SFX(mdr_table_init_profile)(tab, *nodes, n, &c, a_max);
-        if (st != MDR_OK) {
-            return cli_fail("--a-max", st);
-        }
+    if (A->kind == KIND_TABLE && !A->have_amax) {
+        a_max = c.p[0]; /* the last sample */
+    } else if (!A->have_amax && (rc = CLI_SFX(default_extent)(A, &c, &a_max)) != 0) {
+        free(keep);
+        return rc;
+    }
+    st = CLI_SFX(mdr_table_init_profile)(tab, *nodes, n, &c, a_max);
+    free(keep);
+    if (st != MDR_OK) {
+        return cli_fail("--a-max", st);
     }
     return 0;
 }
@@ -127,7 +137,8 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     mdr_step_f64 r, po; /* the step of any arithmetic, in double (exact) */
     mdr_host_q31 Q;
     mdr_node_q31 *qnodes = NULL;
-    long seg, j, step = 0, events = 0, jumps = 0, have_po = 0;
+    long seg, j, step = 0, events = 0, jumps = 0, have_po = 0, have_t = 0;
+    double tF = 0, td = 0; /* the most tensile force along the path, and its depth */
     int rc = CLI_SFX(make_table)(A, &tab, &nodes);
     mdr_status st;
     char *list = NULL;
@@ -189,6 +200,20 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             }
             printf("%ld," CLI_FMT "," CLI_FMT "," CLI_FMT "," CLI_FMT ",%s\n", step, r.z, r.d, r.F,
                    r.a, mdr_event_str(r.event));
+            /* the states of the step: after it, and around a jump (the last
+             * stable state before it, the state right after it) */
+            {
+                const double Fs[3] = {r.F, r.F0, r.F1};
+                const double ds[3] = {r.d, r.d0, r.d1};
+                int k, nk = r.event != MDR_EV_NONE ? 3 : 1;
+                for (k = 0; k < nk; k++) {
+                    if (Fs[k] < 0 && (!have_t || Fs[k] < tF)) {
+                        tF = Fs[k];
+                        td = ds[k];
+                        have_t = 1;
+                    }
+                }
+            }
             if (r.event != MDR_EV_NONE) {
                 char buf[512];
                 int len = snprintf(buf, sizeof buf,
@@ -234,6 +259,11 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     } else {
         fprintf(stderr, "{\"pull_off_F\": null, \"pull_off_d\": null");
     }
+    if (have_t) {
+        fprintf(stderr, ", \"max_tensile_F\": " CLI_FMT ", \"max_tensile_d\": " CLI_FMT, tF, td);
+    } else {
+        fprintf(stderr, ", \"max_tensile_F\": null, \"max_tensile_d\": null");
+    }
     fprintf(stderr,
             ", \"events\": %ld, \"dissipated\": " CLI_FMT ", \"cycles\": %lu, \"jumps\": %ld"
             ", \"springs\": %u, \"a_max\": " CLI_FMT ", \"arith\": \"%s\", \"event_list\": [%s]}\n",
@@ -246,25 +276,34 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     return rc;
 }
 
-static int CLI_SFX(run)(const struct cli_args *A)
+/* eq, critical, curve and stress on the scene's contact */
+static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp)
 {
-    CLI_SFX(mdr_contact) c;
-    if (A->cmd == CMD_CYCLE) {
-        return CLI_SFX(cycle_cmd)(A);
-    }
-    if (A->cmd == CMD_TABLE) {
-        return CLI_SFX(table_cmd)(A);
-    }
-    CLI_T p[3] = {(CLI_T)A->p[0], (CLI_T)A->p[1], (CLI_T)A->p[2]};
-    mdr_status st = CLI_SFX(mdr_contact_init)(&c, A->kind, p, (CLI_T)A->E, (CLI_T)A->w);
-    if (st != MDR_OK) {
-        return cli_fail("profile/material", st);
-    }
+    const CLI_SFX(mdr_contact) c = *cp;
+    mdr_status st;
     if (A->cmd == CMD_EQ) {
         CLI_SFX(mdr_eqstate) e;
         st = CLI_SFX(mdr_eq)(&c, (CLI_T)A->a, &e);
         if (st != MDR_OK) {
             return cli_fail("--a", st);
+        }
+        if (A->have_d) {
+            /* the state (a, d) as given: F = F_eq + 2 E* a (d - d_eq) (F is
+             * linear in d at fixed a), K_I and G of that state (4.17, 4.14) */
+            CLI_T d = (CLI_T)A->d, K, G;
+            CLI_T F = e.F + (CLI_T)2 * c.E * e.a * (d - e.d);
+            st = CLI_SFX(mdr_stress_intensity)(&c, e.a, d, &K, &G);
+            if (st != MDR_OK) {
+                return cli_fail("--a/--d", st);
+            }
+            printf("{\"a\": " CLI_FMT ", \"d\": " CLI_FMT ", \"F\": " CLI_FMT ", \"dd_da\": " CLI_FMT
+                   ", \"dF_da\": " CLI_FMT ", \"dl\": " CLI_FMT ", \"K_I\": " CLI_FMT ", \"G\": " CLI_FMT
+                   ", \"stable_load\": %s, \"stable_grips\": %s, \"d_eq\": " CLI_FMT ", \"F_eq\": " CLI_FMT
+                   "}\n",
+                   (double)e.a, (double)d, (double)F, (double)e.dd_da, (double)e.dF_da, (double)e.dl,
+                   (double)K, (double)G, e.stable_load ? "true" : "false", e.stable_grips ? "true" : "false",
+                   (double)e.d, (double)e.F);
+            return 0;
         }
         printf("{\"a\": " CLI_FMT ", \"d\": " CLI_FMT ", \"F\": " CLI_FMT ", \"dd_da\": " CLI_FMT
                ", \"dF_da\": " CLI_FMT ", \"dl\": " CLI_FMT ", \"K_I\": " CLI_FMT ", \"G\": " CLI_FMT
@@ -304,8 +343,10 @@ static int CLI_SFX(run)(const struct cli_args *A)
         }
         if (A->cmd == CMD_CRITICAL) {
             printf("{\"a\": " CLI_FMT ", \"d\": " CLI_FMT ", \"F\": " CLI_FMT
-                   ", \"jumps\": %u, \"a_start\": " CLI_FMT "}\n",
-                   (double)o.a, (double)o.d, (double)o.F, (unsigned)o.jumps, (double)a0);
+                   ", \"jumps\": %u, \"a_start\": " CLI_FMT ", \"max_tensile_F\": " CLI_FMT
+                   ", \"max_tensile_d\": " CLI_FMT "}\n",
+                   (double)o.a, (double)o.d, (double)o.F, (unsigned)o.jumps, (double)a0,
+                   (double)o.F_min, (double)o.d_F_min);
             return 0;
         }
         {
@@ -321,11 +362,40 @@ static int CLI_SFX(run)(const struct cli_args *A)
     }
     {
         CLI_T sg;
-        st = CLI_SFX(mdr_stress)(&c, (CLI_T)A->a, (CLI_T)A->r, &sg);
-        if (st != MDR_OK) {
-            return cli_fail("--a/--r", st);
+        if (A->have_d) {
+            st = CLI_SFX(mdr_stress_at)(&c, (CLI_T)A->a, (CLI_T)A->d, (CLI_T)A->r, &sg);
+        } else {
+            st = CLI_SFX(mdr_stress)(&c, (CLI_T)A->a, (CLI_T)A->r, &sg);
         }
-        printf("{\"sigma\": " CLI_FMT "}\n", (double)sg);
+        if (st != MDR_OK) {
+            return cli_fail(A->have_d ? "--a/--d/--r" : "--a/--r", st);
+        }
+        if (A->have_d) {
+            printf("{\"sigma\": " CLI_FMT ", \"a\": " CLI_FMT ", \"d\": " CLI_FMT ", \"r\": " CLI_FMT
+                   "}\n",
+                   (double)sg, A->a, A->d, A->r);
+        } else {
+            printf("{\"sigma\": " CLI_FMT "}\n", (double)sg);
+        }
         return 0;
     }
+}
+
+static int CLI_SFX(run)(const struct cli_args *A)
+{
+    CLI_SFX(mdr_contact) c;
+    CLI_T *keep;
+    int rc;
+    if (A->cmd == CMD_CYCLE) {
+        return CLI_SFX(cycle_cmd)(A);
+    }
+    if (A->cmd == CMD_TABLE) {
+        return CLI_SFX(table_cmd)(A);
+    }
+    rc = CLI_SFX(make_contact)(A, &c, &keep);
+    if (rc == 0) {
+        rc = CLI_SFX(contact_cmd)(A, &c);
+    }
+    free(keep);
+    return rc;
 }

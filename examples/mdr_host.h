@@ -5,12 +5,16 @@
  *   - the value of the controlled variable at a tick of a piecewise-linear
  *     path;
  *   - the q31 engine in SI units: the units of its Q formats in double and
- *     the conversions SI <-> raw (lib/include/mdr_q31.h, "Units").
+ *     the conversions SI <-> raw (lib/include/mdr_q31.h, "Units");
+ *   - the contact of a sampled tip from radii and slopes in double (the
+ *     spring table of `mdr cycle --profile table` and Engine.from_tip).
  * Host code (double arithmetic); static inline functions, nothing from the C
  * library. The per-arithmetic helpers are in mdr_host_t.h.
  */
 #ifndef MDR_HOST_H
 #define MDR_HOST_H
+
+#include <float.h>
 
 #include "mdr.h"
 

@@ -86,3 +86,40 @@ static inline void HOST_SFX(mdr_host_widen)(const HOST_SFX(mdr_step) *s, mdr_ste
     o->event = s->event;
     o->jumps = s->jumps;
 }
+
+/**
+ * @brief The contact of a sampled gap profile f(r_i) (a measured or worn
+ *        tip) from radii and interval slopes given in double, as the CLI
+ *        (--profile table) and the Python package (Engine.from_tip) make it,
+ *        so that both build the same spring table from it: r and s converted
+ *        to the arithmetic into buf (the contact points to it), then
+ *        mdr_contact_init_table(). Form the slopes in double from the
+ *        heights (tip_slopes(), examples/tip_csv.h): in float the difference
+ *        of two heights loses their offset's digits.
+ * @param r    m radii [m] (r[0] = 0, strictly increasing)
+ * @param s    m - 1 interval slopes (f[j+1] - f[j])/(r[j+1] - r[j])
+ * @param m    samples, MDR_TABLE_MIN_POINTS .. 65535
+ * @param buf  caller storage of 2 m values, kept while the contact is used
+ * @return MDR_E_OVERFLOW (a finite r or s beyond the arithmetic's range:
+ *         nothing converted to inf), or the status of
+ *         mdr_contact_init_table()
+ */
+static inline mdr_status HOST_SFX(mdr_host_tip_contact)(HOST_SFX(mdr_contact) *c, const double *r,
+                                                       const double *s, uint16_t m, HOST_T E, HOST_T w,
+                                                       HOST_T *buf)
+{
+    const double max = sizeof(HOST_T) == sizeof(float) ? (double)FLT_MAX : DBL_MAX;
+    uint16_t i;
+    for (i = 0; i < m; i++) {
+        const double v[2] = {r[i], i + 1 < m ? s[i] : 0.0};
+        int k;
+        for (k = 0; k < 2; k++) {
+            if ((v[k] > max || v[k] < -max) && v[k] - v[k] == 0.0) {
+                return MDR_E_OVERFLOW;
+            }
+        }
+        buf[i] = (HOST_T)v[0];
+        buf[m + i] = (HOST_T)v[1];
+    }
+    return HOST_SFX(mdr_contact_init_table)(c, buf, buf + m, m, E, w);
+}

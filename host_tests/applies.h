@@ -13,7 +13,7 @@
 #define MDR_CFG_ALL_PROFILES                                                                       \
     (MDR_CFG_PROFILE_PARABOLOID && MDR_CFG_PROFILE_CONE && MDR_CFG_PROFILE_POWERLAW &&             \
      MDR_CFG_PROFILE_FLATPUNCH && MDR_CFG_PROFILE_SPHERE && MDR_CFG_PROFILE_FLATTIP &&             \
-     MDR_CFG_PROFILE_WAVY)
+     MDR_CFG_PROFILE_WAVY && MDR_CFG_PROFILE_TABLE)
 
 #define MDR_TEST_NOT_APPLICABLE(needs)                                                             \
     int main(void)                                                                                 \

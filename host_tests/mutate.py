@@ -9,9 +9,9 @@ Mutants marked `equivalent:` (with the argument why no test can tell them
 from the original) must survive; one that is killed is a list error.
 
 The fast suites: the host cmocka suites (unit, scene, config, engine, GSL,
-vectors, engine vs ref, q31), the q31 trace against its committed
-fingerprint (host_tests/q31_trace.expected), the CLI contract and the short
-stress sweep. A suite that runs past its time limit (a mutant that loops
+vectors, critical states, engine vs ref, q31), the q31 trace against its
+committed fingerprint (host_tests/q31_trace.expected), the CLI contract and
+the short stress and critical-state sweeps. A suite that runs past its time limit (a mutant that loops
 until an iteration cap, or forever) counts as killing it.
 
 Usage: mutate.py [--quick] [--jobs N] [--only ID[,ID...]] [--keep]
@@ -51,10 +51,12 @@ SUITES = [
     ("test_gsl", ["host_tests/test_gsl.c"], ["ref"], ["-lcmocka"] + GSL, [], 60),
     ("q31_trace", ["host_tests/q31_trace.c"], [], ["-lm"], [], 60),
     ("test_vectors", ["host_tests/test_vectors.c"], [], ["-lcmocka", "-lm"], [], 60),
+    ("test_critical", ["host_tests/test_critical.c"], [], ["-lcmocka", "-lm"], [], 60),
     ("cli", ["examples/mdr_cli.c"], [], ["-lm"], [], 60),
     ("test_engine_ref", ["host_tests/test_engine_ref.c"], ["ref"], ["-lcmocka"] + GSL, [], 90),
     ("test_q31", ["host_tests/test_q31.c"], ["ref"], ["-lcmocka"] + GSL, [], 120),
     ("stress", ["host_tests/stress.c"], [], ["-lm"], ["short"], 120),
+    ("crit_sweep", ["host_tests/crit_sweep.c"], [], ["-lm"], ["short"], 60),
 ]
 
 

@@ -34,6 +34,35 @@ done
 out=$($MDR critical $P --control machine --k-machine 1e9 --a-start 8e-6 --arith f64) || bad "machine exit"
 near "$(key "$out" F)" -1.308996939e-6 1e-6 && ok || bad "stiff machine = grips: $out"
 
+# a state (a, d) as given (issue 16): F, K_I, G of that state against the
+# closed forms F = 2E*(a d - a^3/(3R)), K_I = E*(a^2/R - d)/sqrt(pi a), G = K_I^2/(2E*)
+for arith in f32 f64; do
+    out=$($MDR eq $P --a 2.6e-6 --d 0.1e-6 --arith $arith) || bad "eq --d exit ($arith)"
+    for k in a d F dd_da dF_da dl K_I G stable_load stable_grips d_eq F_eq; do
+        [ -n "$(key "$out" $k)" ] && ok || bad "eq --d: key $k missing in $out"
+    done
+    near "$(key "$out" F)" "$(awk 'BEGIN { a = 2.6e-6; printf "%.17g", 2e6 * (a * 0.1e-6 - a^3 / 30e-6) }')" 1e-6 && ok ||
+        bad "eq --d F of the state ($arith): $out"
+    near "$(key "$out" K_I)" "$(awk 'BEGIN { a = 2.6e-6; printf "%.17g", 1e6 * (a * a / 10e-6 - 0.1e-6) / sqrt(3.14159265358979324 * a) }')" 1e-6 &&
+        ok || bad "eq --d K_I of the state ($arith): $out"
+    near "$(key "$out" G)" "$(awk 'BEGIN { a = 2.6e-6; k = 1e6 * (a * a / 10e-6 - 0.1e-6) / sqrt(3.14159265358979324 * a); printf "%.17g", k * k / 2e6 }')" 1e-5 &&
+        ok || bad "eq --d G of the state ($arith): $out"
+    # sigma(r) of the state: (E*/pi)((g(a) - d)/sqrt(a^2 - r^2) - (2/R) sqrt(a^2 - r^2)) (4.27, 4.41)
+    out=$($MDR stress $P --a 2e-6 --d 0.1e-6 --r 1e-6 --arith $arith) || bad "stress --d exit ($arith)"
+    near "$(key "$out" sigma)" "$(awk 'BEGIN { a = 2e-6; r = 1e-6; s = sqrt(a * a - r * r); printf "%.17g", 1e6 / 3.14159265358979324 * ((a * a / 10e-6 - 0.1e-6) / s - 2 / 10e-6 * s) }')" 1e-6 &&
+        ok || bad "stress --d ($arith): $out"
+    # the most tensile force of the quasi-static path: -1.5 pi w R under
+    # grips (the fold force is -5/6 pi w R), at the fixed-load critical depth
+    out=$($MDR critical $P --control grips --arith $arith) || bad "critical grips exit"
+    near "$(key "$out" max_tensile_F)" -2.35619449019e-6 1e-6 && ok || bad "critical grips max_tensile_F ($arith): $out"
+    near "$(key "$out" max_tensile_d)" -0.226148482694e-6 1e-6 && ok || bad "critical grips max_tensile_d ($arith): $out"
+    near "$(key "$out" F)" -1.308996939e-6 1e-6 && ok || bad "critical grips F stays the fold's ($arith): $out"
+    out=$($MDR critical $P --control load --arith $arith) || bad "critical load exit"
+    near "$(key "$out" max_tensile_F)" -2.35619449019e-6 1e-6 && ok || bad "critical load max_tensile_F = F ($arith)"
+done
+out=$($MDR critical $P --control machine --k-machine 1 --arith f64) || bad "critical machine exit"
+near "$(key "$out" max_tensile_F)" -2.35619449019e-6 1e-9 && ok || bad "critical machine max_tensile_F: $out"
+
 csv=$($MDR curve $P --a-max 1e-5 --n 50) || bad "curve exit"
 [ "$(printf '%s\n' "$csv" | head -1)" = "a,d,F" ] && ok || bad "curve header"
 [ "$(printf '%s\n' "$csv" | wc -l)" -eq 51 ] && ok || bad "curve rows"
@@ -59,7 +88,7 @@ for arith in f32 f64 q31; do
     [ "$(wc -l <"$TMP/c.csv")" -eq 4002 ] && ok || bad "cycle rows: 2 segments x 2000 + 1 + header"
     [ "$(tail -1 "$TMP/c.csv" | awk -F, '{print NF}')" -eq 6 ] && ok || bad "cycle columns"
     j=$(cat "$TMP/c.json")
-    for k in pull_off_F pull_off_d events dissipated; do
+    for k in pull_off_F pull_off_d events dissipated max_tensile_F max_tensile_d; do
         [ -n "$(key "$j" $k)" ] && ok || bad "cycle: key $k missing in $j"
     done
     near "$(key "$j" pull_off_F)" -1.308996939e-6 1e-5 && ok || bad "cycle grips pull-off F ($arith): $j"
@@ -67,6 +96,30 @@ for arith in f32 f64 q31; do
     [ "$(key "$j" arith)" = "\"$arith\"" ] && ok || bad "cycle arith key ($arith): $j"
     [ "$(key "$j" events)" = 2 ] && ok || bad "cycle: contact + pull-off = 2 events: $j"
     grep -q ',contact$' "$TMP/c.csv" && grep -q ',pull-off$' "$TMP/c.csv" && ok || bad "cycle event column"
+    # the most tensile force along the path: loaded like Hertz (w_adv = 0)
+    # to d = 0.5 um the edge is pinned at a = sqrt(R d) = 2.236 um (below the
+    # fixed-load critical radius) and recedes at d = a^2/R - dl(a), where F
+    # = F_JKR(a) = 4E* a^3/(3R) - sqrt(8 pi a^3 E* w); smaller radii are less
+    # tensile. The path is sampled: the steps straddle that point, and one
+    # step of d (5.5e-10 m) moves the pinned F by 2E* a 5.5e-10 = 1.1e-3 of F
+    near "$(key "$j" max_tensile_F)" "$(awk 'BEGIN { a = sqrt(5e-12); printf "%.17g", 4e6 * a^3 / 30e-6 - sqrt(8 * 3.14159265358979324 * a^3 * 1e6 * 0.05) }')" 1.1e-3 &&
+        ok || bad "cycle grips max_tensile_F ($arith): $j"
+    near "$(key "$j" max_tensile_d)" "$(awk 'BEGIN { a = sqrt(5e-12); printf "%.17g", a * a / 10e-6 - sqrt(2 * 3.14159265358979324 * a * 0.05 / 1e6) }')" 2e-3 &&
+        ok || bad "cycle grips max_tensile_d ($arith): $j"
+    # reversible loading (w_adv = w) past the fixed-load critical radius: the
+    # fixed-load fold -1.5 pi w R is passed under grips (the fold force is
+    # -5/6 pi w R)
+    j=$($MDR cycle $P --control grips --path 0,0.5e-6,-0.6e-6 --steps-per-segment 2000 --springs 256 \
+        --w-adv 0.05 --arith $arith 2>&1 >/dev/null) || bad "cycle grips w_adv exit ($arith)"
+    near "$(key "$j" max_tensile_F)" -2.35619449019e-6 1e-5 && ok || bad "cycle grips max_tensile_F = -1.5 pi w R ($arith): $j"
+    near "$(key "$j" max_tensile_d)" -0.226148482694e-6 2e-3 && ok || bad "cycle grips max_tensile_d ($arith): $j"
+    near "$(key "$j" pull_off_F)" -1.308996939e-6 1e-5 && ok || bad "cycle grips w_adv pull-off ($arith): $j"
+done
+for arith in f32 f64 q31; do
+    j=$($MDR cycle $P --control grips --path 0,0.5e-6,0.4e-6 --steps-per-segment 100 --springs 256 \
+        --arith $arith 2>&1 >/dev/null) || bad "cycle without tension exit ($arith)"
+    [ "$(key "$j" max_tensile_F)" = null ] && [ "$(key "$j" max_tensile_d)" = null ] && ok ||
+        bad "cycle with nothing tensile: max_tensile null ($arith): $j"
 done
 j=$($MDR cycle $P --control load --path 0,3e-6,-3e-6 --steps-per-segment 1000 --w-adv 0.05 \
     --springs 128 --arith f64 2>&1 >/dev/null) || bad "cycle load exit"
@@ -91,6 +144,47 @@ j=$($MDR cycle --profile table --file "$TMP/tip.csv" --E 1e6 --w 0.05 --control 
     --path 0,3e-6,-3e-6 --steps-per-segment 1000 --springs 512 --arith f64 2>&1 >/dev/null) ||
     bad "cycle table exit"
 near "$(key "$j" pull_off_F)" -2.35619449019e-6 1e-9 && ok || bad "tabulated paraboloid pull-off: $j"
+# every command takes a tabulated tip (issue 16): the sampled paraboloid
+# against JKR, in f64 to 1e-9; in f32 with a 1 m height offset to 1e-6 (the
+# slopes are formed in double before the conversion)
+awk 'BEGIN { print "r,f"; for (i = 0; i <= 60; i++) { r = 12e-6 * i / 60; printf "%.17g,%.17g\n", r, 1 + r * r / 20e-6 } }' >"$TMP/tip1m.csv"
+T="--profile table --file $TMP/tip.csv --E 1e6 --w 0.05"
+for arith in f32 f64; do
+    tol=$([ $arith = f64 ] && echo 1e-9 || echo 1e-6)
+    for f in "$TMP/tip.csv" "$TMP/tip1m.csv"; do
+        out=$($MDR critical --profile table --file "$f" --E 1e6 --w 0.05 --control load --arith $arith) ||
+            bad "critical table exit ($arith, $f)"
+        near "$(key "$out" F)" -2.35619449019e-6 $tol && ok || bad "critical table load F ($arith, $f): $out"
+        near "$(key "$out" a)" 2.60469853934e-6 $tol && ok || bad "critical table load a ($arith, $f): $out"
+        out=$($MDR critical --profile table --file "$f" --E 1e6 --w 0.05 --control grips --arith $arith) ||
+            bad "critical table grips exit"
+        near "$(key "$out" F)" -1.308996939e-6 $tol && ok || bad "critical table grips F ($arith, $f): $out"
+        near "$(key "$out" d)" -0.470407800461e-6 $tol && ok || bad "critical table grips d ($arith, $f): $out"
+    done
+    out=$($MDR critical $T --control machine --k-machine 1 --arith $arith) || bad "critical table machine exit"
+    want=$($MDR critical $P --control machine --k-machine 1 --a-start 8e-6 --arith f64)
+    near "$(key "$out" F)" "$(key "$want" F)" $tol && ok || bad "critical table machine ($arith): $out vs $want"
+    out=$($MDR eq $T --a 2.6e-6 --arith $arith) || bad "eq table exit"
+    near "$(key "$out" K_I)" 316.227766 $tol && ok || bad "eq table K_I ($arith): $out"
+    near "$(key "$out" F)" "$(awk 'BEGIN { a = 2.6e-6; printf "%.17g", 4e6 * a^3 / 30e-6 - sqrt(8 * 3.14159265358979324 * a^3 * 1e6 * 0.05) }')" \
+        $tol && ok || bad "eq table F ($arith): $out"
+    out=$($MDR stress $T --a 2e-6 --r 1e-6 --arith $arith) || bad "stress table exit"
+    want=$($MDR stress $P --a 2e-6 --r 1e-6 --arith f64)
+    near "$(key "$out" sigma)" "$(key "$want" sigma)" 1e-6 && ok || bad "stress table ($arith): $out vs $want"
+    csv=$($MDR curve $T --a-max 1.2e-5 --n 12 --arith $arith) || bad "curve table exit"
+    [ "$(printf '%s\n' "$csv" | wc -l)" -eq 13 ] && ok || bad "curve table rows"
+done
+# a worn tip: flat for r < b (b at a node, above 0.7475 a*): Kendall's
+# separation at a = b under load and grips, to 1e-9 (f64)
+awk 'BEGIN { print "r,f"; b = 2.4e-6; for (i = 0; i <= 100; i++) { r = 12e-6 * i / 100; printf "%.17g,%.17g\n", r, (r < b ? 0 : (r * r - b * b) / 20e-6) } }' >"$TMP/worn.csv"
+for ctl in load grips; do
+    out=$($MDR critical --profile table --file "$TMP/worn.csv" --E 1e6 --w 0.05 --control $ctl --arith f64) ||
+        bad "critical worn tip exit ($ctl)"
+    near "$(key "$out" F)" "$(awk 'BEGIN { b = 2.4e-6; printf "%.17g", -sqrt(8 * 3.14159265358979324 * b^3 * 1e6 * 0.05) }')" 1e-9 &&
+        ok || bad "worn tip: Kendall F at a = b ($ctl): $out"
+    near "$(key "$out" d)" "$(awk 'BEGIN { b = 2.4e-6; printf "%.17g", -sqrt(2 * 3.14159265358979324 * b * 0.05 / 1e6) }')" 1e-9 &&
+        ok || bad "worn tip: Kendall d at a = b ($ctl): $out"
+done
 $MDR table --profile table --file "$TMP/tip.csv" --springs 16 --name my_tip >"$TMP/t.c" || bad "table exit"
 grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad "table C output"
 [ "$(grep -c '^    {' "$TMP/t.c")" -eq 19 ] && ok || bad "table: 17 nodes and 2 of block bounds for 16 springs"
@@ -166,6 +260,16 @@ $MDR table --profile table --file "$TMP/ok.csv" --springs 8 --name crlf >"$TMP/c
 expect2 table $P
 expect2 table --profile paraboloid --R 1e-5 --a-max 1e-6 --name 9lives
 expect2 eq --profile table --file "$TMP/tip.csv" --E 1 --w 1 --a 1
+expect2 eq --profile table --E 1 --w 1 --a 1e-6
+expect2 stress $P --control load --d 1e-7 --r 0.5
+expect2 curve $P --a-max 1e-5 --n 5 --d 1e-7
+expect2 critical $P --control load --d 1e-7
+expect2 eq $P --a 2e-6 --d nan
+printf 'r,f\n0,0\n1e-6,1e-9\n1e-6,2e-9\n' >"$TMP/bad.csv"
+expect2 critical --profile table --file "$TMP/bad.csv" --E 1e6 --w 0.05 --control load
+# a table that ends on the unstable branch: the pull-off lies beyond it
+awk 'BEGIN { print "r,f"; for (i = 0; i <= 20; i++) { r = 1e-6 * i / 20; printf "%.17g,%.17g\n", r, r * r / 20e-6 } }' >"$TMP/short.csv"
+expect2 critical --profile table --file "$TMP/short.csv" --E 1e6 --w 0.05 --control load
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -15,6 +15,12 @@
  *          computable), 3e-7 (f32) times max(|H|, scale), scale = min(z, 1)
  *          for H0, min(z^2, 1)/5 for H1 (the quadrature's error is absolute
  *          on the scale of its integrand); f32 at the float z.
+ * The bounds the critical search of the wavy profile rests on
+ * (lib/src/equilibrium/mdr_critical.inc), with GSL's Bessel functions and
+ * ref/'s Struve functions: J0^2 + Y0^2 <= 2/(pi z); z (J1^2 + Y1^2) <= 1.01 *
+ * 2/pi for z >= 8; |H0 + z H0'| <= 0.8019 sqrt(z) + 0.3617 for z >= 8;
+ * 0 < d(z H0)/dz <= 4z/pi for z <= 1. Checked as stated (no tolerance):
+ * each holds with a margin the print shows.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -23,6 +29,8 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <cmocka.h>
+
+#include <gsl/gsl_sf_bessel.h>
 
 #include "mdr.h"
 #include "mdr_ref.h"
@@ -142,6 +150,33 @@ static void G_vs_ref(void **st)
     }
 }
 
+static void wavy_envelope_bounds(void **st)
+{
+    double m0 = 0, m1 = 0, mh = 0, ms = 0;
+    (void)st;
+    for (double z = 1e-3; z < 2e4; z *= 1.0137) {
+        double j0 = gsl_sf_bessel_J0(z), y0 = gsl_sf_bessel_Y0(z);
+        m0 = fmax(m0, (j0 * j0 + y0 * y0) / (2 / (M_PI * z)));
+        if (z >= 8) {
+            double j1 = gsl_sf_bessel_J1(z), y1 = gsl_sf_bessel_Y1(z);
+            m1 = fmax(m1, z * (j1 * j1 + y1 * y1) / (1.01 * 2 / M_PI));
+        }
+    }
+    for (double z = 8; z < 600; z += 0.0373) {
+        /* H0 + z H0' with H0' = 2/pi - H1 (ref/: integral representations) */
+        double v = ref_struve_h0(z) + z * (2 / M_PI - ref_struve_h1(z));
+        mh = fmax(mh, fabs(v) / (0.8019 * sqrt(z) + 0.3617));
+    }
+    for (double z = 1e-3; z <= 1; z += 0.0173) {
+        double v = ref_struve_h0(z) + z * (2 / M_PI - ref_struve_h1(z));
+        assert_true(v > 0);
+        ms = fmax(ms, v / (4 * z / M_PI));
+    }
+    printf("wavy envelope bounds (largest ratio to the bound, <= 1 holds): M0^2 %.4f, z M1^2 %.4f, "
+           "|H0 + z H0'| %.4f, d(z H0)/dz %.4f\n", m0, m1, mh, ms);
+    assert_true(m0 <= 1 && m1 <= 1 && mh <= 1 && ms <= 1);
+}
+
 static void struve_vs_ref(void **st)
 {
     (void)st;
@@ -165,6 +200,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(struve_vs_ref),
+        cmocka_unit_test(wavy_envelope_bounds),
         cmocka_unit_test(G_vs_ref),
         cmocka_unit_test(stress_vs_ref),
     };

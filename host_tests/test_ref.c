@@ -138,6 +138,43 @@ static void sphere(void **st)
     near(c.F, -0.209776616592, 1e2 * 0.209776616592, "sphere F_c (12 digits)");
 }
 
+/* CHECK_VALUES: power laws sharper than a cone and the soft sphere, from
+ * starts below the critical radius (unstable: the reference jumps in to
+ * the stable branch first, as mdr_critical does) */
+static void critical_from_unstable_starts(void **st)
+{
+    static const struct {
+        double n, aL, dL, FL, aG, dG, FG;
+    } pw[] = {
+        {0.6, 4118452.7333, 7630.41636019, -2618792426.23, 69.7463586732, -3.48898781902, -2007.58961561},
+        {0.9, 12.4842955703, 5.90446695301, -46.5556488168, 0.800867934242, -0.996983265699, -2.64749849968},
+    };
+    (void)st;
+    for (size_t i = 0; i < sizeof pw / sizeof pw[0]; i++) {
+        ref_scene s = {MDR_PROFILE_POWERLAW, {1, pw[i].n, 0}, 1, 1};
+        ref_crit c;
+        assert_int_equal(ref_critical(&s, MDR_CONTROL_LOAD, 0, 0.5, &c), 0);
+        near(c.a, pw[i].aL, 1e1 * pw[i].aL, "n < 1 load a (CHECK_VALUES, 12 digits)");
+        near(c.F, pw[i].FL, -1e1 * pw[i].FL, "n < 1 load F");
+        near(c.d, pw[i].dL, 1e1 * fabs(pw[i].dL), "n < 1 load d");
+        assert_int_equal(ref_critical(&s, MDR_CONTROL_GRIPS, 0, 0.5, &c), 0);
+        near(c.a, pw[i].aG, 1e1 * pw[i].aG, "n < 1 grips a");
+        near(c.F, pw[i].FG, -1e1 * pw[i].FG, "n < 1 grips F");
+        near(c.d, pw[i].dG, 1e1 * fabs(pw[i].dG), "n < 1 grips d");
+    }
+    {
+        ref_scene s = {MDR_PROFILE_SPHERE, {1, 0, 0}, 1, 5};
+        ref_crit c;
+        assert_int_equal(ref_critical(&s, MDR_CONTROL_LOAD, 0, 0.9, &c), 0);
+        near(c.a, 0.931509435763, 1e2 * 0.931509435763, "sphere w = 5 load a beyond 0.9 R");
+        near(c.F, -7.89129674995, 1e2 * 7.89129674995, "sphere w = 5 load F");
+        near(c.d, -3.85431932452, 1e2 * 3.85431932452, "sphere w = 5 load d");
+        assert_int_equal(ref_critical(&s, MDR_CONTROL_GRIPS, 0, 0.9, &c), 0);
+        near(c.a, 0.788756074688, 1e2 * 0.788756074688, "sphere w = 5 grips a");
+        near(c.F, -6.90880201948, 1e2 * 6.90880201948, "sphere w = 5 grips F");
+    }
+}
+
 /* 4.83 flattened tip */
 static void flat_tip(void **st)
 {
@@ -196,6 +233,7 @@ int main(void)
         cmocka_unit_test(paraboloid_jkr), cmocka_unit_test(cone),   cmocka_unit_test(flat_punch),
         cmocka_unit_test(power_law),      cmocka_unit_test(sphere), cmocka_unit_test(flat_tip),
         cmocka_unit_test(wavy),           cmocka_unit_test(struve_values),
+        cmocka_unit_test(critical_from_unstable_starts),
     };
     int rc = cmocka_run_group_tests_name("ref_vs_closed_forms", tests, NULL, NULL);
     /* diagnostics, not a test (see ref/mdr_ref.c) */

@@ -29,5 +29,6 @@
 /* #define MDR_CFG_PROFILE_SPHERE 0 */
 /* #define MDR_CFG_PROFILE_FLATTIP 0 */
 /* #define MDR_CFG_PROFILE_WAVY 0 */
+/* #define MDR_CFG_PROFILE_TABLE 0 */
 
 #endif /* MDR_CONFIG_H */

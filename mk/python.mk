@@ -36,7 +36,7 @@ clean: python-clean
 PY_INC := -Ilib/include -Iport/host -Iexamples -Ipython/src
 LINT_CFG_py := -std=c99 $(PY_INC)
 $(eval $(call lint_rule,py:python/src/mdr_py.c))
-$(call lint_stamp,py:python/src/mdr_py.c): $(wildcard python/src/*.h python/src/*.inc) examples/mdr_host.h examples/mdr_host_t.h
+$(call lint_stamp,py:python/src/mdr_py.c): $(wildcard python/src/*.h python/src/*.inc) examples/mdr_host.h examples/mdr_host_t.h examples/tip_csv.h
 $(B)/lint/cppcheck-py.stamp: $(wildcard python/src/*.c python/src/*.h python/src/*.inc) .cppcheck-suppressions $(LIB_DEPS) $(wildcard examples/*.h)
 	@mkdir -p $(@D)
 	$(CPPCHECK) $(PY_INC) python/src/mdr_py.c

@@ -425,12 +425,65 @@ static double step_down(const ref_scene *s, double a, double rel)
     return a - h;
 }
 
+/* Domain end for the jump-in scan: R for the sphere (exclusive), a0 for the
+ * flat punch (a wall: the edge stops there); 0 for none. */
+static double dom_of(const ref_scene *s)
+{
+    return s->kind == MDR_PROFILE_SPHERE || s->kind == MDR_PROFILE_FLATPUNCH ? s->p[0] : 0.0;
+}
+
+/* An unstable start (dc/da <= 0 there): the contact jumps in, as when
+ * pressed there, to the smallest a > a_start with c(a) = c(a_start) (a
+ * fine upward scan, then Brent). Returns the new start, the wall (flat
+ * punch), or -1 when there is none (c falls for ever). */
+static double jump_in(const ref_scene *s, struct cctx *c, double a_start)
+{
+    double cstar, a = a_start, dom = dom_of(s), rel = 0.002;
+    int guard = 0;
+    c->target = 0.0;
+    cstar = c_value(a_start, c);
+    c->target = cstar;
+    for (;;) {
+        double h = a * rel, an;
+        rel = rel * 1.03 < 0.05 ? rel * 1.03 : 0.05;
+        if (s->kind == MDR_PROFILE_WAVY && s->p[1] > 0 && h > s->p[2] / 64) {
+            h = s->p[2] / 64;
+        }
+        an = a + h;
+        if (dom > 0 && an >= dom) {
+            an = s->kind == MDR_PROFILE_SPHERE ? a + 0.5 * (dom - a) : dom;
+            if (!(an > a)) {
+                return -1;
+            }
+        }
+        if (++guard > 2000000) {
+            return -1;
+        }
+        if (c_value(an, c) >= 0) {
+            return brent(c_value, c, a, an);
+        }
+        if (s->kind == MDR_PROFILE_FLATPUNCH && an == dom) {
+            return dom;
+        }
+        a = an;
+    }
+}
+
 int ref_critical(const ref_scene *s, int control, double k_m, double a_start, ref_crit *out)
 {
     struct cctx c = {s, control, k_m, 0.0};
     double a = a_start, amin = a_start * 1e-9;
     int jumps = 0, guard = 0;
     int unstable = !(c_slope(a, &c) > 0);
+    if (unstable && !(s->kind == MDR_PROFILE_FLATPUNCH && a == s->p[0]) &&
+        !(s->kind == MDR_PROFILE_FLATTIP && a == s->p[1])) {
+        a = jump_in(s, &c, a_start);
+        if (a < 0) {
+            return -1;
+        }
+        amin = a * 1e-9;
+        unstable = !(c_slope(a, &c) > 0);
+    }
     for (;;) {
         if (!unstable) {
             double an = step_down(s, a, 0.005);

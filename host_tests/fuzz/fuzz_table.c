@@ -6,6 +6,11 @@
  * be finite, and carries an f32, f64 and q31 engine through a fixed
  * approach and retraction under fixed grips (0 -> the table's largest
  * depth -> twice the adhesive reach below 0), checked as fuzz.h says.
+ * The same samples, as slopes formed in double (tip_slopes), make a contact
+ * of the contact module (mdr_contact_init_table, f32 and f64): equilibrium
+ * at radii across the table and, for up to 512 samples, the critical state
+ * from the default start under fixed load and grips; named statuses,
+ * nothing written on refusal, finite results.
  */
 #include "fuzz.h"
 #include "tip_csv.h"
@@ -17,6 +22,61 @@ static float r32[PMAX], f32[PMAX];
 static mdr_node_f64 n64[MDR_TABLE_NODES(NMAX)];
 static mdr_node_f32 n32[MDR_TABLE_NODES(NMAX)];
 static mdr_node_q31 nq[MDR_TABLE_NODES(NMAX)];
+static double sl[PMAX];
+static float sl32[PMAX];
+
+/* the contact module on the samples (see the top) */
+static void contact_checks(long m, double E, double w)
+{
+    mdr_contact_f64 c;
+    mdr_contact_f32 cf;
+    long i;
+    mdr_status st;
+    if (tip_slopes(r, f, m, sl) != 0) {
+        return;
+    }
+    for (i = 0; i + 1 < m; i++) {
+        sl32[i] = (float)sl[i];
+    }
+    memset(&c, 0x5a, sizeof c);
+    {
+        mdr_contact_f64 c0 = c;
+        st = mdr_contact_init_table_f64(&c, r, sl, (uint16_t)m, E, w);
+        fz_status(st);
+        FZ_CHECK(st == MDR_OK || memcmp(&c, &c0, sizeof c) == 0);
+    }
+    if (st == MDR_OK) {
+        mdr_critstate_f64 k, k0;
+        double a0;
+        for (i = 1; i <= 8; i++) {
+            mdr_eqstate_f64 q;
+            st = mdr_eq_f64(&c, c.p[0] * (double)i / 8.0, &q);
+            fz_status(st);
+            FZ_CHECK(st != MDR_OK || (fz_fin(q.d) && fz_fin(q.F) && fz_fin(q.dF_da) && fz_fin(q.dd_da)));
+        }
+        if (m <= 512 && mdr_default_start_f64(&c, &a0) == MDR_OK) {
+            for (uint8_t ctl = 1; ctl <= 2; ctl++) {
+                memset(&k, 0x5a, sizeof k);
+                k0 = k;
+                st = mdr_critical_f64(&c, ctl, 0.0, a0, &k);
+                fz_status(st);
+                FZ_CHECK(st == MDR_OK ? fz_fin(k.a) && fz_fin(k.d) && fz_fin(k.F) && fz_fin(k.F_min)
+                                      : memcmp(&k, &k0, sizeof k) == 0);
+            }
+        }
+    }
+    st = mdr_contact_init_table_f32(&cf, r32, sl32, (uint16_t)m, (float)E, (float)w);
+    fz_status(st);
+    if (st == MDR_OK && m <= 512) {
+        mdr_critstate_f32 k;
+        float a0;
+        if (mdr_default_start_f32(&cf, &a0) == MDR_OK) {
+            st = mdr_critical_f32(&cf, MDR_CONTROL_LOAD, 0.0f, a0, &k);
+            fz_status(st);
+            FZ_CHECK(st != MDR_OK || (fz_fin((double)k.a) && fz_fin((double)k.F) && fz_fin((double)k.d)));
+        }
+    }
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -41,6 +101,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         r32[i] = (float)r[i];
         f32[i] = (float)f[i];
     }
+    contact_checks(m, E, w);
     st = mdr_table_init_gap_f32(&t32, n32, n, r32, f32, (uint16_t)m);
     fz_status(st);
     if (st == MDR_OK) {

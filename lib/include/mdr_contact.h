@@ -13,7 +13,10 @@
 #define MDR_TEMPLATE "mdr_contact_t.h"
 #include "mdr_each_arith.h"
 
-/** Cap on the downward scan of mdr_critical_<type>() (grid steps). */
-#define MDR_CRIT_SCAN_MAX 8192
+/** Cap on the cells walked by mdr_critical_<type>() (beyond:
+ *  MDR_E_NOCONV): the wavy profile takes four per wavelength below the
+ *  radius above which it is stable under every control (65536 wavelengths),
+ *  a table two per sample interval (every table fits). */
+#define MDR_CRIT_SCAN_MAX 262144
 
 #endif /* MDR_CONTACT_H */

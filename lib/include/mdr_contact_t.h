@@ -26,7 +26,10 @@ typedef struct {
     MDR_T w;     /**< work of adhesion w [J/m^2] */
     MDR_T p[3];  /**< profile parameters as given (see MDR_PROFILE_*) */
     MDR_T c_dl;  /**< sqrt(2*pi*w/E*) [m^0.5]: dl(a) = c_dl*sqrt(a) */
-    MDR_T k[3];  /**< per-profile derived constants (see mdr_contact_*.c) */
+    MDR_T k[3];  /**< per-profile derived constants (see profile/mdr_profile.inc) */
+    const MDR_T *tr; /**< MDR_PROFILE_TABLE: the caller's radii r[0..tm-1]; NULL otherwise */
+    const MDR_T *ts; /**< MDR_PROFILE_TABLE: the caller's interval slopes s[0..tm-2]; NULL otherwise */
+    uint16_t tm;  /**< MDR_PROFILE_TABLE: number of samples; 0 otherwise */
     uint8_t kind; /**< MDR_PROFILE_* */
 } MDR_SFX(mdr_contact);
 
@@ -50,6 +53,12 @@ typedef struct {
     MDR_T d;        /**< indentation depth [m] */
     MDR_T F;        /**< normal force [N] */
     uint16_t jumps; /**< intermediate jumps (to a smaller stable radius) before this state */
+    MDR_T F_min;    /**< the most tensile (lowest) force of the equilibrium states the
+                         quasi-static path passes from the start to this one [N]: under
+                         fixed load F itself; under fixed grips of a paraboloid -1.5 pi w R
+                         (F at the load's fold) while F = -5/6 pi w R; 0 or more when
+                         nothing along the path is tensile */
+    MDR_T d_F_min;  /**< the depth of that state [m] */
 } MDR_SFX(mdr_critstate);
 
 /**
@@ -64,11 +73,52 @@ typedef struct {
  * @param[in]  E     effective modulus E* > 0 [Pa]
  * @param[in]  w     work of adhesion w >= 0 [J/m^2]; w = 0 is the
  *                   non-adhesive contact exactly (dl = 0)
- * @return MDR_OK, MDR_E_NULL, MDR_E_KIND, MDR_E_DISABLED (a profile removed by
+ * @return MDR_OK, MDR_E_NULL, MDR_E_KIND (also for MDR_PROFILE_TABLE: use
+ *         mdr_contact_init_table()), MDR_E_DISABLED (a profile removed by
  *         MDR_CFG_PROFILE_<KIND>, mdr_options.h), MDR_E_NONFINITE, MDR_E_PARAM
  */
 mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind,
                                      const MDR_T p[3], MDR_T E, MDR_T w);
+
+/**
+ * @brief A contact whose gap profile is sampled (a measured or worn tip):
+ *        kind MDR_PROFILE_TABLE, the same model as the spring tables of
+ *        mdr_table_init_gap(), evaluated exactly at any radius.
+ *
+ * f' is linear on each interval [r_j, r_j+1] with mean slope s_j exactly and
+ * a curvature estimated from the neighbouring slopes; at a node where the
+ * slope jumps (a kink: a worn flat's rim, the leading samples equal) the
+ * curvature is taken from one side only, so the kink stays at that node
+ * (a node is a kink where its slope change per unit length exceeds 4x both
+ * neighbours'). g, g' and G = int g are then the exact Abel integrals of
+ * that f' (g' is +-inf just above a kink: MDR_E_OVERFLOW from
+ * mdr_profile_eval() there when dg is asked for, like the flattened tip's
+ * rim). Accuracy: order 2.5 in the sample spacing for a smooth f
+ * (README "Tabulated tips"); a paraboloid, and a paraboloid with a flat
+ * ending at a node, are reproduced to rounding. Cost of one evaluation
+ * O(m); mdr_critical() on a table O(m^2).
+ *
+ * Why slopes, not f: the model needs only f', and forming f_j+1 - f_j in
+ * float loses the samples' height (a 1 m offset on a 10 um sphere moved
+ * the f32 pull-off by 46 %). Difference the samples where they are exact
+ * (in double on the host: tip_slopes() in examples/tip_csv.h, the mdr CLI,
+ * or your own code: s_j = (f_j+1 - f_j)/(r_j+1 - r_j)), then convert r and
+ * s to float. The f32 library never calls a double helper.
+ *
+ * @param[out] c  filled only on MDR_OK; it keeps the pointers r and s (the
+ *                arrays are the caller's and must outlive the contact)
+ * @param[in]  r  radii [m], r[0] = 0, strictly increasing, finite
+ * @param[in]  s  slopes s[j] = (f(r_j+1) - f(r_j))/(r_j+1 - r_j), j = 0..m-2
+ *                [1], finite
+ * @param[in]  m  samples, MDR_TABLE_MIN_POINTS (3) .. 65535
+ * @param[in]  E  effective modulus E* > 0 [Pa]
+ * @param[in]  w  work of adhesion w >= 0 [J/m^2]
+ * @return MDR_OK, MDR_E_NULL, MDR_E_DISABLED (MDR_CFG_PROFILE_TABLE = 0),
+ *         MDR_E_NONFINITE, MDR_E_PARAM (E, w), MDR_E_TABLE (m, r),
+ *         MDR_E_OVERFLOW (g or G at r[m-1] beyond the arithmetic's range)
+ */
+mdr_status MDR_SFX(mdr_contact_init_table)(MDR_SFX(mdr_contact) *c, const MDR_T *r,
+                                           const MDR_T *s, uint16_t m, MDR_T E, MDR_T w);
 
 /**
  * @brief Equivalent 1D profile at x: g(x), g'(x) and G(x) = int_0^x g.
@@ -140,13 +190,31 @@ mdr_status MDR_SFX(mdr_stress)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T r,
  * the next stable equilibrium with a smaller radius (counted in jumps). The
  * result is the last stable state before complete separation: for a smooth
  * paraboloid the JKR pull-off, for the flat punch Kendall's rupture (4.63),
- * for the flattened tip with b > 0.7475 a* the state at a = b. If the branch
+ * for the flattened tip with b > 0.7475 a* the state at a = b (a* the
+ * paraboloid's critical radius under the same control). If the branch
  * peels stably all the way to a -> 0 (w = 0, or a power law with n < 1/2),
  * the result is a = d = F = 0.
  *
- * Method: scan a downward on a geometric grid (step 1.5 %, at most lambda/16
- * for the wavy profile), bisection on dc/da and on c(a) - c* to machine
- * precision; fixed caps MDR_CRIT_SCAN_MAX scan steps, 200 bisection steps.
+ * Equivalently, the result is the minimum of the control's equilibrium
+ * value c(a) over (0, a_start] (F, d or z), and the jumps are the other
+ * local minima of c lower than everything above them. The search finds
+ * every local minimum by construction from the profile's structure
+ * (closed-form or bracketed stability roots, kinks, the wavy profile's
+ * asymptotic envelope; equilibrium/mdr_critical.inc), not by a scan of
+ * fixed step.
+ *
+ * a_start is a hint that cannot make the answer wrong: if the contact at
+ * a_start is unstable under the control, it first jumps in (as when pressed
+ * there) to the smallest larger radius with the same control value, and
+ * retracts from there. For every profile but the wavy one (whose jumps
+ * depend on where retraction starts) the result is then the same for every
+ * start at or above the outermost fold (mdr_default_start() is one).
+ *
+ * Work: a few dozen evaluations for the closed-form profiles; the wavy
+ * profile four per wavelength below the radius where every control is
+ * stable (from its asymptotic envelope) plus ~100 per fold; a table O(m^2)
+ * (two cells per sample interval, O(m) each). Fixed caps:
+ * MDR_CRIT_SCAN_MAX cells, 200 bisection and 160 golden-section steps.
  *
  * @param[in]  control  MDR_CONTROL_LOAD, _GRIPS or _MACHINE
  * @param[in]  k_m      machine stiffness [N/m], finite > 0; used only for
@@ -154,20 +222,34 @@ mdr_status MDR_SFX(mdr_stress)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T r,
  * @param[in]  a_start  starting radius [m] in the profile's domain (see
  *                      mdr_default_start())
  * @param[out] out      filled only on MDR_OK
- * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_CONTROL,
- *         MDR_E_NOCONV, MDR_E_OVERFLOW
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_CONTROL, MDR_E_RADIUS
+ *         (a_start outside the domain; no stable state at or above it: a
+ *         power law with n < 1/2 beyond its fold, a table that ends on an
+ *         unstable branch; the sphere's critical radius within rounding of
+ *         R), MDR_E_OVERFLOW (a critical radius or state beyond the
+ *         arithmetic's range, more than 65535 jumps), MDR_E_NOCONV (more
+ *         than MDR_CRIT_SCAN_MAX cells: a wavy contact of more than ~65536
+ *         wavelengths below its stable radius)
  */
 mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
                                  MDR_T k_m, MDR_T a_start,
                                  MDR_SFX(mdr_critstate) *out);
 
 /**
- * @brief A starting radius for mdr_critical() well inside the contact:
- *        3 x the radius a_x where g(a_x) = dl(a_x) (for power laws with
- *        n < 1/2: a_x/3), capped at a0 (flat punch) and 0.9 R (sphere) and at
- *        least 1.5 b (flattened tip); without adhesion the profile's length.
+ * @brief A starting radius for mdr_critical() on the last stable branch of
+ *        every control: above the outermost root of dF/da = 0 (found
+ *        exactly: above it every control is stable), 3 x the radius a_x
+ *        where g(a_x) = dl(a_x) when that lies above the root (the start
+ *        before issue 16), else twice the root, and below R for the sphere
+ *        (halfway from the root to R); at least 1.5 b for the flattened
+ *        tip; power laws with n < 1/2: below their load root (min(a_x/3,
+ *        root/2)), where they are stable; the flat punch: a0; a table: its
+ *        last sample; the wavy profile (where the jumps depend on the
+ *        start): 3 a_x of its smooth base; without adhesion the profile's
+ *        length.
  * @param[out] a_start [m]; untouched unless MDR_OK
- * @return MDR_OK, MDR_E_NULL, MDR_E_NOCONV, MDR_E_OVERFLOW (the radius is
- *         beyond the arithmetic's range: w/E* enormous)
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NOCONV, MDR_E_RADIUS (the sphere's root
+ *         within rounding of R), MDR_E_OVERFLOW (the radius is beyond the
+ *         arithmetic's range: w/E* enormous, or a power law near n = 1/2)
  */
 mdr_status MDR_SFX(mdr_default_start)(const MDR_SFX(mdr_contact) *c, MDR_T *a_start);

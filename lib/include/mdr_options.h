@@ -43,7 +43,9 @@
  *   special functions: Struve for the wavy profile, atanh for the sphere,
  *   Gamma and powers for power laws, sin/cos/log for the cone) is not built.
  *   MDR_CFG_PROFILE_PARABOLOID, _CONE, _POWERLAW, _FLATPUNCH, _SPHERE,
- *   _FLATTIP, _WAVY
+ *   _FLATTIP, _WAVY, _TABLE (sampled profiles in the contact module; the
+ *   spring tables of sampled profiles, mdr_table_init_gap(), come with
+ *   MDR_CFG_ENGINE)
  */
 #ifndef MDR_OPTIONS_H
 #define MDR_OPTIONS_H
@@ -98,6 +100,9 @@
 #ifndef MDR_CFG_PROFILE_WAVY
 #define MDR_CFG_PROFILE_WAVY 1
 #endif
+#ifndef MDR_CFG_PROFILE_TABLE
+#define MDR_CFG_PROFILE_TABLE 1
+#endif
 
 /* combinations that cannot work */
 #if MDR_CFG_Q31 && !MDR_CFG_ENGINE
@@ -117,6 +122,7 @@
      : (k) == MDR_PROFILE_SPHERE    ? MDR_CFG_PROFILE_SPHERE                             \
      : (k) == MDR_PROFILE_FLATTIP   ? MDR_CFG_PROFILE_FLATTIP                            \
      : (k) == MDR_PROFILE_WAVY      ? MDR_CFG_PROFILE_WAVY                               \
+     : (k) == MDR_PROFILE_TABLE     ? MDR_CFG_PROFILE_TABLE                              \
                                     : 0)
 
 #endif /* MDR_OPTIONS_H */

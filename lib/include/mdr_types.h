@@ -34,8 +34,12 @@ typedef int8_t mdr_status;
 /** Unknown profile kind. */
 #define MDR_E_KIND (-4)
 /** Contact radius a outside the profile's domain (a <= 0, a >= R for the
- *  exact sphere, a > a0 for the flat punch, a/lambda >= 2^46 (f32) or 2^104
- *  (f64) for the wavy profile). */
+ *  exact sphere, a > a0 for the flat punch, a > r[m-1] for a tabulated
+ *  profile, a/lambda >= 2^46 (f32) or 2^104 (f64) for the wavy profile);
+ *  from mdr_critical(): no stable state at or above the start (the contact
+ *  would grow without bound when pressed there, or the stable branch lies
+ *  beyond the last sample of a table), or a critical radius beyond the
+ *  arithmetic's resolution (the sphere's within one ulp of R). */
 #define MDR_E_RADIUS (-5)
 /** Radial position r outside [0, a). */
 #define MDR_E_POSITION (-6)
@@ -68,6 +72,7 @@ typedef int8_t mdr_status;
 #define MDR_PROFILE_SPHERE 5u     /**< f = R - sqrt(R^2-r^2); p = {R}            */
 #define MDR_PROFILE_FLATTIP 6u    /**< paraboloid, flat for r<b; p = {R, b}      */
 #define MDR_PROFILE_WAVY 7u       /**< r^2/(2R)+h(1-cos(2 pi r/lambda)); p = {R, h, lambda} */
+#define MDR_PROFILE_TABLE 8u      /**< sampled f(r_i) (a measured or worn tip): mdr_contact_init_table() */
 
 /** Control modes: what the device holds fixed while the contact evolves. */
 #define MDR_CONTROL_LOAD 1u    /**< force F controlled (fixed load, k = 2/3 in 4.23)  */

@@ -82,9 +82,10 @@ class Engine:
     def from_tip(cls, r, f, *, E, w, springs=1024, w_adv=0.0, k_machine=0.0, arith="f64"):
         """Engine on a sampled gap profile f(r_i) [m] of a measured or worn
         tip at radii r_i [m] (r_0 = 0, strictly increasing, at least
-        MDR_TABLE_MIN_POINTS points; mdr_table_init_gap: f' linear on each
-        interval, the Abel transform integrated exactly). The table extends
-        to r[-1]. E [Pa], w [J/m^2] and the rest as Engine()."""
+        MDR_TABLE_MIN_POINTS points; f' linear on each interval, the Abel
+        transform integrated exactly, the slopes formed in double as `mdr
+        cycle --profile table` forms them). The table extends to r[-1].
+        E [Pa], w [J/m^2] and the rest as Engine()."""
         self = cls.__new__(cls)
         self._setup(E, w, springs, w_adv, k_machine, arith)
         r = np.ascontiguousarray(r, dtype=np.float64)

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "mdr_py.h"
+#include "tip_csv.h"
 
 #define MDR_TEMPLATE "mdr_py_t.inc"
 #include "mdr_each_arith.h"
@@ -95,9 +96,9 @@ mdr_status mdrpy_engine_tip(mdrpy_engine *x, uint8_t arith, const double *r, con
     }
     x->arith = arith;
     if (arith == MDRPY_F32) {
-        st = mdrpy_table_tip_f32(x, r, f, m, springs, n32);
+        st = mdrpy_table_tip_f32(x, r, f, m, E, w, springs, n32);
     } else {
-        st = mdrpy_table_tip_f64(x, r, f, m, springs, n64);
+        st = mdrpy_table_tip_f64(x, r, f, m, E, w, springs, n64);
     }
     if (st != MDR_OK) {
         return st;

@@ -124,7 +124,11 @@ mdr_status mdrpy_engine_profile(mdrpy_engine *x, uint8_t arith, uint8_t kind, co
 
 /**
  * @brief Engine on the spring table of a sampled gap profile f(r_i), m
- *        points (mdr_table_init_gap_*), extent r[m-1]. Nodes as above.
+ *        points, extent r[m-1], built as `mdr cycle --profile table` builds
+ *        it: the slopes formed in double, the contact of the samples
+ *        (mdr_host_tip_contact(), mdr_contact_init_table_*), its table
+ *        (mdr_table_init_profile_*; the same model as mdr_table_init_gap_*).
+ *        Nodes as above.
  */
 mdr_status mdrpy_engine_tip(mdrpy_engine *x, uint8_t arith, const double *r, const double *f,
                             uint16_t m, double E, double w, double w_adv, double k_m,

@@ -108,9 +108,19 @@ def test_critical_refusals(arith):
     refused("MDR_E_NONFINITE", c.critical, "machine", k_machine=math.inf)
     refused("MDR_E_NONFINITE", c.critical, "load", a_start=math.nan)
     refused("MDR_E_RADIUS", c.critical, "load", a_start=-1e-6)
-    # a power law so close to n = 1/2 and so blunt that its starting radius is out of reach
-    refused("MDR_E_NOCONV", mdr.Contact("powerlaw", C=1e-10, n=0.6, E=1.0, w=1.0, arith=arith).default_start)
-    refused("MDR_E_NOCONV", mdr.Contact("powerlaw", C=1e-10, n=0.6, E=1.0, w=1.0, arith=arith).critical, "load")
+    # a wavy contact of more than 65 536 wavelengths below its stable radius:
+    # the critical search's cell cap (MDR_CRIT_SCAN_MAX)
+    wavy = mdr.Contact("wavy", R=1.0, h=5e-9, lam=0.5e-6, E=1e6, w=0.05, arith=arith)
+    refused("MDR_E_NOCONV", wavy.critical, "load", a_start=0.1)
+    # a power law close to n = 1/2 and blunt: its pull-off radius (4.70) is
+    # 1e100 x CHECK_VALUES' n = 0.6 radius 4118452.7333 (C^(-1/(n - 1/2)));
+    # beyond float's range in f32 (before issue 16 both answered MDR_E_NOCONV)
+    blunt = mdr.Contact("powerlaw", C=1e-10, n=0.6, E=1.0, w=1.0, arith=arith)
+    if arith == "f32":
+        refused("MDR_E_OVERFLOW", blunt.default_start)
+        refused("MDR_E_OVERFLOW", blunt.critical, "load")
+    else:
+        assert blunt.critical("load").a == pytest.approx(4118452.7333e100, rel=2e-11)  # its 11 digits
     if arith == "f32":  # beyond float's range: refused, not passed on as inf
         refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=1e39, **P, arith=arith)
         refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=1e-6, E=1e300, w=0.05, arith=arith)

@@ -1,0 +1,733 @@
+/*
+ * test_critical.c: the critical-state search of issue 16 and the sampled
+ * profiles of the contact module (MDR_PROFILE_TABLE): named cases from
+ * CHECK_VALUES and the issue, starts as hints, the most tensile force of the
+ * path, the wavy profile at gripper scale against a brute-force retraction,
+ * tables against the closed forms they sample (worn flats: Kendall), and
+ * every error path. The sweep over the parameter ranges is
+ * host_tests/crit_sweep.c (make stress).
+ *
+ * Tolerances (relative; depths relative to max(|d|, dl(a))):
+ *   REL_CV  1e-11  CHECK_VALUES (12 digits)
+ *   REL64   1e-12  closed forms in double
+ *   REL32   3e-6   f32 (the sweep's worst 2.5e-6 of a power law: kappa_n in
+ *                  float to ~30 ulp)
+ *   COND32  2e-6 * 1/(n - 1/2)  f32 near n = 1/2, where the radius is
+ *                  ill-conditioned (a relative error e of s moves it by e/(n - 1/2))
+ *   KENDALL 1e-9   a worn tip's separation at its rim, sampled (the goal of
+ *                  issue 16; measured 0 in f64: g = 0 on the flat exactly)
+ *   TAB_ORD 2.3    fitted order of g, G of a sampled sphere (claim 2.5), 1.3
+ *                  for g' (the derivative of a piecewise-linear f' model:
+ *                  order 1.5 claimed)
+ *   WAVY    1e-6   gripper-scale wavy critical radius against a brute-force
+ *                  retraction on 64 points per wavelength refined by golden
+ *                  section (measured: equal to the printed digits)
+ *   TAB_SPH 1e-5   a sphere sampled at 2000 intervals to 0.9 R against the
+ *                  exact sphere: the model's error (measured printed below)
+ */
+#include <float.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "mdr.h"
+#include "applies.h"
+
+#if !(MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_STRESS && MDR_CFG_ALL_PROFILES)
+MDR_TEST_NOT_APPLICABLE("f32, f64, stress and every profile")
+#else
+#include "test_util.h"
+#include "contact_util.h"
+
+#define REL_CV 1e-11
+#define REL64 1e-12
+#define REL32 3e-6
+#define KENDALL 1e-9
+#define WAVY 1e-6
+#define TAB_SPH 1e-5
+
+/* ------------------------------------------------------------ named */
+
+/* CHECK_VALUES, power laws sharper than a cone (E* = w = C = 1) */
+static void powerlaw_below_one(void **st)
+{
+    (void)st;
+    /* f32 near n = 1/2: the radius is ill-conditioned by 1/(n - 1/2) */
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.6, 0, 1, 1, MDR_CONTROL_LOAD, 0, 4118452.7333, 7630.41636019,
+         -2618792426.23, REL_CV, 2e-6 / 0.1, "n = 0.6 load (CHECK_VALUES)");
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.6, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 69.7463586732, -3.48898781902,
+         -2007.58961561, REL_CV, 2e-6 / 0.1, "n = 0.6 grips");
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.9, 0, 1, 1, MDR_CONTROL_LOAD, 0, 12.4842955703, 5.90446695301,
+         -46.5556488168, REL_CV, 2e-6 / 0.4, "n = 0.9 load");
+    crit_both(MDR_PROFILE_POWERLAW, 1, 0.9, 0, 1, 1, MDR_CONTROL_GRIPS, 0, 0.800867934242, -0.996983265699,
+         -2.64749849968, REL_CV, 2e-6 / 0.4, "n = 0.9 grips");
+}
+
+/* the issue's example: n = 0.6, C = 0.005, E* = 1 GPa, w = 0.05 gave
+ * a = 4e-26 m (the start) with MDR_OK; 4.70-4.72 worked out here */
+static void issue_powerlaw_example(void **st)
+{
+    double n = 0.6, C = 0.005, E = 1e9, w = 0.05;
+    double kap = sqrt(M_PI) * tgamma(n / 2 + 1) / tgamma((n + 1) / 2), c = sqrt(2 * M_PI * w / E);
+    double a = pow(1.5 * c / (n * kap * C), 1 / (n - 0.5));
+    double d = kap * C * pow(a, n) - c * sqrt(a);
+    double F = 2 * E * (n / (n + 1) * kap * C * pow(a, n + 1) - c * pow(a, 1.5));
+    (void)st;
+    print_message("issue example: a_c = %.6g m (the old default start returned 4e-26 m)\n", a);
+    crit_both(MDR_PROFILE_POWERLAW, C, n, 0, E, w, MDR_CONTROL_LOAD, 0, a, d, F, REL64, 2e-6 / 0.1,
+         "n = 0.6, C = 0.005, E* = 1 GPa");
+}
+
+/* the exact sphere beyond 0.9 R (CHECK_VALUES w = 5) and the issue's f32
+ * NOCONV (R = 20 nm, E* = 1 MPa, w = 0.3) */
+static void sphere_near_R(void **st)
+{
+    mdr_contact_f32 c32 = mk32(MDR_PROFILE_SPHERE, 20e-9, 0, 0, 1e6, 0.3);
+    mdr_contact_f64 c64 = mk64(MDR_PROFILE_SPHERE, 20e-9, 0, 0, 1e6, 0.3);
+    mdr_critstate_f32 of;
+    mdr_critstate_f64 o;
+    float a0f;
+    double a0;
+    (void)st;
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 5, MDR_CONTROL_LOAD, 0, 0.931509435763, -3.85431932452,
+         -7.89129674995, REL_CV, REL32, "sphere w = 5 load, a = 0.93 R");
+    crit_both(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 5, MDR_CONTROL_GRIPS, 0, 0.788756074688, -4.13540655475,
+         -6.90880201948, REL_CV, REL32, "sphere w = 5 grips");
+    assert_int_equal(mdr_default_start_f32(&c32, &a0f), MDR_OK);
+    assert_int_equal(mdr_critical_f32(&c32, MDR_CONTROL_LOAD, 0, a0f, &of), MDR_OK);
+    assert_int_equal(mdr_default_start_f64(&c64, &a0), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c64, MDR_CONTROL_LOAD, 0, a0, &o), MDR_OK);
+    rel_le(of.a, o.a, 0, REL32, "issue: f32 sphere R = 20 nm, w = 0.3 (was MDR_E_NOCONV)");
+    rel_le(of.F, o.F, 0, REL32, "issue: f32 sphere F");
+    /* a -> R: w/E* so large that the critical radius lies within rounding
+     * of R in float: a named error, in double still a result */
+    {
+        mdr_contact_f32 cs = mk32(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 1e14);
+        mdr_contact_f64 cd = mk64(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 1e14);
+        memset(&of, GUARD, sizeof of);
+        a0f = 123.0f;
+        assert_int_equal(mdr_default_start_f32(&cs, &a0f), MDR_E_RADIUS);
+        assert_int_equal(mdr_critical_f32(&cs, MDR_CONTROL_LOAD, 0, 0.999999f, &of), MDR_E_RADIUS);
+        assert_true(untouched(&of, sizeof of) && a0f == 123.0f);
+        assert_int_equal(mdr_default_start_f64(&cd, &a0), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&cd, MDR_CONTROL_LOAD, 0, a0, &o), MDR_OK);
+        print_message("sphere E* R/(pi w) = 3e-15: a_c = 1 - %.3g R (f64; within rounding of R in f32)\n", 1 - o.a);
+        assert_true(o.a < 1 && o.a > 1 - 1e-7);
+        /* from a start far below, the jump-in target (F grows only like
+         * log(1/(1 - a/R))) lies within rounding of R even in double */
+        assert_int_equal(mdr_critical_f64(&cd, MDR_CONTROL_LOAD, 0, 0.5, &o), MDR_E_RADIUS);
+    }
+}
+
+/* The facts the flattened tip's structure rests on (mdr_critical.inc), in
+ * closed form: s = sqrt(a) g'(a) has its single minimum on (b, inf) at
+ * y_m^2 = (9 + sqrt 57)/12; above it sigma = d ln s/d ln a rises from 0 to
+ * 3/2 and where it is below 2 - sqrt 3 (the machine threshold's largest
+ * slope tau) it rises faster than tau can change (|d tau/d ln a| <= 0.101),
+ * so ln(s/(c phi)) falls, then rises: at most two roots; and the threshold
+ * 0.7475 a* of the seed. */
+static void flattip_structure(void **st)
+{
+    const long double ym = sqrtl((9 + sqrtl(57.0L)) / 12), tmax = 2 - sqrtl(3.0L);
+    long double prev = -1, mind = 1e30L, maxt = 0;
+    (void)st;
+    /* sigma = 1/2 + 4y^2/(2y^2 - 1) - y^2/(y^2 - 1) = 3/2 - 1/((2y^2 - 1)(y^2 - 1)) */
+    for (long double y = ym; y < 100; y *= 1.0001L) {
+        long double y2 = y * y, sig = 1.5L - 1 / ((2 * y2 - 1) * (y2 - 1));
+        long double yh = y * 1.000001L, yh2 = yh * yh;
+        long double sh = 1.5L - 1 / ((2 * yh2 - 1) * (yh2 - 1));
+        long double dsig = (sh - sig) / logl(1.000001L);
+        assert_true(sig > prev); /* rising */
+        prev = sig;
+        if (sig < tmax) {
+            mind = fminl(mind, dsig);
+        }
+    }
+    for (long double x = 1e-8L; x < 1e8L; x *= 1.001L) {
+        long double t = x / (0.5L + 2 * x + 1.5L * x * x);
+        long double dt = x * (0.5L - 1.5L * x * x) / ((0.5L + 2 * x + 1.5L * x * x) * (0.5L + 2 * x + 1.5L * x * x));
+        assert_true(t <= tmax + 1e-15L);
+        maxt = fmaxl(maxt, fabsl(dt));
+    }
+    print_message("flattened tip: y_m = %.6Lf, min d sigma/d ln a where sigma < 0.268: %.2Lf, max |d tau/d ln a| %.4Lf, "
+                  "threshold b/a* = %.6Lf\n",
+                  ym, mind, maxt, powl(2 / (sqrtl(ym) * (2 * ym * ym - 1) / sqrtl(ym * ym - 1)), 2.0L / 3));
+    assert_true(mind > maxt);
+    assert_true(fabsl(powl(2 / (sqrtl(ym) * (2 * ym * ym - 1) / sqrtl(ym * ym - 1)), 2.0L / 3) - 0.7475L) < 1e-4L);
+}
+
+/* ------------------------------------------------------------ hints */
+
+/* any start on the unstable branch (or at the root, or far out) gives the
+ * same critical state; the flat punch from any start is Kendall's at a0;
+ * where no stable state is reachable: MDR_E_RADIUS */
+static void starts_are_hints(void **st)
+{
+    static const struct {
+        uint8_t kind;
+        double p0, p1;
+    } sc[] = {
+        {MDR_PROFILE_PARABOLOID, 1e-5, 0}, {MDR_PROFILE_CONE, 0.3, 0},    {MDR_PROFILE_POWERLAW, 1, 0.6},
+        {MDR_PROFILE_POWERLAW, 1, 3.0},    {MDR_PROFILE_SPHERE, 1e-6, 0}, {MDR_PROFILE_FLATTIP, 1e-5, 1e-7},
+    };
+    (void)st;
+    for (size_t i = 0; i < sizeof sc / sizeof sc[0]; i++) {
+        for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+            mdr_contact_f64 c = mk64(sc[i].kind, sc[i].p0, sc[i].p1, 0, 1e6, 0.05);
+            mdr_critstate_f64 ref, o;
+            double a0;
+            assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&c, ctl, 1.0, a0, &ref), MDR_OK);
+            for (double f = 1e-6; f < 1e4; f *= 7.3) {
+                double as = f * ref.a;
+                if (sc[i].kind == MDR_PROFILE_SPHERE && as >= sc[i].p0) {
+                    continue;
+                }
+                assert_int_equal(mdr_critical_f64(&c, ctl, 1.0, as, &o), MDR_OK);
+                rel_le(o.a, ref.a, 0, 1e-14, "the same critical radius from any start");
+                rel_le(o.F, ref.F, 0, 1e-14, "the same critical force from any start");
+            }
+        }
+    }
+    {
+        mdr_contact_f64 c = mk64(MDR_PROFILE_FLATPUNCH, 1, 0, 0, 1, 1);
+        mdr_critstate_f64 o;
+        for (double as = 1e-6; as <= 1; as *= 3.7) {
+            assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, as, &o), MDR_OK);
+            rel_le(o.F, -sqrt(8 * M_PI), 0, REL64, "Kendall from any start (the rim is a wall)");
+        }
+    }
+    {
+        /* n < 1/2: stable below its fold (peels to a = 0); above it c falls
+         * for ever: no stable state to jump in to */
+        mdr_contact_f64 c = mk64(MDR_PROFILE_POWERLAW, 1, 0.4, 0, 1, 1);
+        mdr_contact_f32 cf = mk32(MDR_PROFILE_POWERLAW, 1, 0.4, 0, 1, 1);
+        mdr_critstate_f64 o;
+        mdr_critstate_f32 of;
+        double a0;
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &o), MDR_OK);
+        assert_true(o.a == 0 && o.F == 0 && o.d == 0);
+        memset(&o, GUARD, sizeof o);
+        memset(&of, GUARD, sizeof of);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, 1e6, &o), MDR_E_RADIUS);
+        assert_int_equal(mdr_critical_f32(&cf, MDR_CONTROL_GRIPS, 0, 1e6f, &of), MDR_E_RADIUS);
+        assert_true(untouched(&o, sizeof o) && untouched(&of, sizeof of));
+    }
+}
+
+/* the default start lies on the last stable branch of every control */
+static void default_start_is_stable(void **st)
+{
+    static const struct {
+        uint8_t kind;
+        double p0, p1, w;
+    } sc[] = {
+        {MDR_PROFILE_PARABOLOID, 1e-5, 0, 0.05}, {MDR_PROFILE_CONE, 0.3, 0, 0.05},
+        {MDR_PROFILE_POWERLAW, 0.005, 0.6, 0.05}, {MDR_PROFILE_POWERLAW, 1, 0.51, 1},
+        {MDR_PROFILE_POWERLAW, 1, 8, 1},         {MDR_PROFILE_SPHERE, 1, 0, 5},
+        {MDR_PROFILE_SPHERE, 1, 0, 1e3},         {MDR_PROFILE_FLATTIP, 1e-5, 3e-7, 0.05},
+    };
+    (void)st;
+    for (size_t i = 0; i < sizeof sc / sizeof sc[0]; i++) {
+        mdr_contact_f64 c = mk64(sc[i].kind, sc[i].p0, sc[i].p1, 0, sc[i].kind == MDR_PROFILE_POWERLAW &&
+                                 sc[i].p0 < 0.1 ? 1e9 : 1, sc[i].w);
+        mdr_eqstate_f64 e;
+        double a0;
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        assert_int_equal(mdr_eq_f64(&c, a0, &e), MDR_OK);
+        assert_true(e.dF_da > 0 && e.dd_da > 0); /* load stable: every control is */
+        if (sc[i].kind == MDR_PROFILE_SPHERE) {
+            assert_true(a0 < sc[i].p0);
+        }
+    }
+}
+
+/* ------------------------------------------------- the path's tension */
+
+/* under grips the path passes the fixed-load fold: -1.5 pi w R, while the
+ * fold itself is at -5/6 pi w R; a machine in between; fixed load: F */
+static void most_tensile_force(void **st)
+{
+    double R = 10e-6, E = 1e6, w = 0.05;
+    mdr_contact_f64 c = mk64(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w);
+    mdr_contact_f32 cf = mk32(MDR_PROFILE_PARABOLOID, R, 0, 0, E, w);
+    mdr_critstate_f64 o;
+    mdr_critstate_f32 of;
+    double a0, dc = -cbrt(3 * M_PI * M_PI * R * w * w / (64 * E * E));
+    float a0f;
+    (void)st;
+    assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+    assert_int_equal(mdr_default_start_f32(&cf, &a0f), MDR_OK);
+    for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+        assert_int_equal(mdr_critical_f64(&c, ctl, 0.3, a0, &o), MDR_OK);
+        assert_int_equal(mdr_critical_f32(&cf, ctl, 0.3f, a0f, &of), MDR_OK);
+        rel_le(o.F_min, -1.5 * M_PI * w * R, 0, REL64, "most tensile force: -1.5 pi w R");
+        rel_le(o.d_F_min, dc, 0, REL64, "at the fixed-load critical depth (4.36)");
+        rel_le(of.F_min, -1.5 * M_PI * w * R, 0, REL32, "most tensile force (f32)");
+        if (ctl == MDR_CONTROL_GRIPS) {
+            rel_le(o.F, -5.0 / 6 * M_PI * w * R, 0, REL64, "the fold force stays -5/6 pi w R");
+        }
+    }
+    /* a start below the fixed-load fold (on the grips branch): the path
+     * never reaches it; the most tensile state is the start itself (F falls
+     * with a there... rises as a falls) */
+    {
+        double a1 = 0.8 * cbrt(9 * M_PI * R * R * w / (8 * E));
+        mdr_eqstate_f64 e;
+        assert_int_equal(mdr_eq_f64(&c, a1, &e), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_GRIPS, 0, a1, &o), MDR_OK);
+        rel_le(o.F_min, e.F, 0, REL64, "path from below the load fold: F_min at the start");
+    }
+}
+
+/* ------------------------------------------------------- wavy at scale */
+
+/* Independent retraction: c(a) of the control on 64 points per wavelength
+ * (mdr_eq), from the library's start down; an unstable start first moves up
+ * to where c regains its value; local minima refined by golden section;
+ * the lowest, and the records before it. */
+static void brute(const mdr_contact_f64 *c, uint8_t ctl, double km, double as, double lam, double *amin,
+                  int *jumps)
+{
+    mdr_eqstate_f64 e;
+    double best = INFINITY, v0, vprev = NAN, vpp = NAN, aprev = 0, ab = 0, h = lam / 64;
+    int nrec = 0;
+#define CTL(e) (ctl == MDR_CONTROL_LOAD ? (e).F : ctl == MDR_CONTROL_GRIPS ? (e).d : (e).d + (e).F / km)
+    assert_int_equal(mdr_eq_f64(c, as, &e), MDR_OK);
+    v0 = CTL(e);
+    {
+        /* jump in: the first a above with c >= c(start) */
+        double a = as, v;
+        do {
+            a += h;
+            assert_int_equal(mdr_eq_f64(c, a, &e), MDR_OK);
+            v = CTL(e);
+        } while (v < v0 && a < 2 * as);
+        if (a - h > as) {
+            as = a;
+        }
+    }
+    for (double a = as; a > 0.05 * lam; a -= (a > 2 * lam ? h : a / 512)) {
+        double v;
+        assert_int_equal(mdr_eq_f64(c, a, &e), MDR_OK);
+        v = CTL(e);
+        if (!isnan(vpp) && vprev < vpp && vprev <= v) {
+            /* a local minimum near aprev: golden section on [a, aprev + step] */
+            double lo = a, hi = aprev + (aprev - a), x1, x2, f1, f2;
+            const double gr = 0.6180339887498949;
+            x1 = hi - gr * (hi - lo);
+            x2 = lo + gr * (hi - lo);
+            assert_int_equal(mdr_eq_f64(c, x1, &e), MDR_OK);
+            f1 = CTL(e);
+            assert_int_equal(mdr_eq_f64(c, x2, &e), MDR_OK);
+            f2 = CTL(e);
+            for (int it = 0; it < 80; it++) {
+                if (f1 < f2) {
+                    hi = x2, x2 = x1, f2 = f1, x1 = hi - gr * (hi - lo);
+                    assert_int_equal(mdr_eq_f64(c, x1, &e), MDR_OK);
+                    f1 = CTL(e);
+                } else {
+                    lo = x1, x1 = x2, f1 = f2, x2 = lo + gr * (hi - lo);
+                    assert_int_equal(mdr_eq_f64(c, x2, &e), MDR_OK);
+                    f2 = CTL(e);
+                }
+            }
+            if (fmin(f1, f2) < best) {
+                best = fmin(f1, f2);
+                ab = f1 < f2 ? x1 : x2;
+                nrec++;
+            }
+        }
+        vpp = vprev;
+        vprev = v;
+        aprev = a;
+    }
+#undef CTL
+    *amin = ab;
+    *jumps = nrec - 1;
+}
+
+/* R = 2 mm, lambda = 0.5 um: ~650 wavelengths inside the default start,
+ * folds in every one of them (h = 1 and 5 nm); the search completes (it hit
+ * its scan cap before issue 16) and agrees with the brute force */
+static void wavy_gripper_scale(void **st)
+{
+    static const double hs[] = {1e-9, 5e-9};
+    (void)st;
+    for (size_t i = 0; i < sizeof hs / sizeof hs[0]; i++) {
+        mdr_contact_f64 c = mk64(MDR_PROFILE_WAVY, 2e-3, hs[i], 0.5e-6, 1e6, 0.05);
+        mdr_contact_f32 cf = mk32(MDR_PROFILE_WAVY, 2e-3, hs[i], 0.5e-6, 1e6, 0.05);
+        double a0;
+        float a0f;
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        assert_int_equal(mdr_default_start_f32(&cf, &a0f), MDR_OK);
+        for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+            mdr_critstate_f64 o;
+            mdr_critstate_f32 of;
+            double ab;
+            int jb;
+            assert_int_equal(mdr_critical_f64(&c, ctl, 1e3, a0, &o), MDR_OK);
+            assert_int_equal(mdr_critical_f32(&cf, ctl, 1e3f, a0f, &of), MDR_OK);
+            brute(&c, ctl, 1e3, a0, 0.5e-6, &ab, &jb);
+            print_message("wavy R = 2 mm, h = %g m, control %u: %.0f wavelengths, a_c = %.9g m (brute %.9g), "
+                          "jumps %u (brute %d), f32 %.7g m, %u jumps\n",
+                          hs[i], ctl, a0 / 0.5e-6, o.a, ab, o.jumps, jb, (double)of.a, of.jumps);
+            rel_le(o.a, ab, 0, WAVY, "gripper-scale wavy critical radius vs brute force");
+            assert_int_equal(o.jumps, jb);
+            assert_true(o.jumps > 100);
+            rel_le(of.a, o.a, 0, 1e-5, "gripper-scale wavy f32");
+            assert_int_equal(of.jumps, o.jumps);
+        }
+    }
+    {
+        /* beyond the cap (65536 wavelengths below the stable radius):
+         * MDR_E_NOCONV, output untouched */
+        mdr_contact_f64 c = mk64(MDR_PROFILE_WAVY, 1.0, 5e-9, 0.5e-6, 1e6, 0.05);
+        mdr_critstate_f64 o;
+        memset(&o, GUARD, sizeof o);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, 0.1, &o), MDR_E_NOCONV);
+        assert_true(untouched(&o, sizeof o));
+    }
+}
+
+/* ------------------------------------------------------------- tables */
+
+static double tr[4097], tf[4097], ts[4096];
+static float trf[4097], tsf[4096];
+
+/* samples of f on [0, rmax], m points, f(r) + off; slopes in double */
+static void sample(double (*f)(double, const double *), const double *par, int m, double rmax, double off)
+{
+    for (int i = 0; i < m; i++) {
+        tr[i] = rmax * i / (m - 1);
+        tf[i] = off + f(tr[i], par);
+        trf[i] = (float)tr[i];
+    }
+    for (int i = 0; i + 1 < m; i++) {
+        ts[i] = (tf[i + 1] - tf[i]) / (tr[i + 1] - tr[i]);
+        tsf[i] = (float)ts[i];
+    }
+}
+
+static double f_par(double r, const double *p)
+{
+    return r * r / (2 * p[0]);
+}
+
+static double f_flat(double r, const double *p)
+{
+    return r < p[1] ? 0 : (r * r - p[1] * p[1]) / (2 * p[0]);
+}
+
+static double f_sph(double r, const double *p)
+{
+    return p[0] - sqrt((p[0] - r) * (p[0] + r));
+}
+
+/* g, g', G of a sampled paraboloid, and of a paraboloid with a flat ending
+ * at a node, are those of the closed forms to rounding (the kink is kept) */
+static void table_exact_for_quadratics(void **st)
+{
+    const double R = 1e-5, b = 2.4e-6, par[2] = {R, b};
+    (void)st;
+    for (int flat = 0; flat < 2; flat++) {
+        mdr_contact_f64 t, ref;
+        sample(flat ? f_flat : f_par, par, 101, 12e-6, 0);
+        assert_int_equal(mdr_contact_init_table_f64(&t, tr, ts, 101, 1e6, 0.05), MDR_OK);
+        ref = flat ? mk64(MDR_PROFILE_FLATTIP, R, b, 0, 1e6, 0.05) : mk64(MDR_PROFILE_PARABOLOID, R, 0, 0, 1e6, 0.05);
+        for (double x = 1e-8; x < 12e-6; x *= 1.05) {
+            double g, dg, G, g0, dg0, G0;
+            if (flat && fabs(x - b) < 1e-3 * b) {
+                continue;
+            }
+            assert_int_equal(mdr_profile_eval_f64(&t, x, &g, &dg, &G), MDR_OK);
+            assert_int_equal(mdr_profile_eval_f64(&ref, x, &g0, &dg0, &G0), MDR_OK);
+            rel_le(g, g0, x * x / R, 1e-13, "sampled g");
+            rel_le(dg, dg0, fabs(dg0) + x / R, flat ? 1e-11 : 1e-13, "sampled g' (the kink kept)");
+            rel_le(G, G0, x * x * x / R, 1e-13, "sampled G");
+        }
+    }
+}
+
+/* order of the sampled sphere's g, G (2.5) and g' (1.5) in the spacing */
+static void table_order(void **st)
+{
+    const double R = 1e-6, par[1] = {R};
+    mdr_contact_f64 ref = mk64(MDR_PROFILE_SPHERE, R, 0, 0, 1e6, 0.05);
+    double lnN[6], eg[6], ed[6], eG[6], og, od, oG;
+    (void)st;
+    print_message("sampled sphere (to 0.6 R): M, largest error of g, g', G (of their values at 0.6 R)\n");
+    for (int k = 0; k < 6; k++) {
+        int m = (16 << k) + 1;
+        mdr_contact_f64 t;
+        double wg = 0, wd = 0, wG = 0, gm, dgm, Gm;
+        sample(f_sph, par, m, 0.6 * R, 0);
+        assert_int_equal(mdr_contact_init_table_f64(&t, tr, ts, (uint16_t)m, 1e6, 0.05), MDR_OK);
+        assert_int_equal(mdr_profile_eval_f64(&ref, 0.6 * R, &gm, &dgm, &Gm), MDR_OK);
+        for (double x = 0.6 * R / 200; x < 0.6 * R; x += 0.6 * R / 200) {
+            double g, dg, G, g0, dg0, G0;
+            assert_int_equal(mdr_profile_eval_f64(&t, x, &g, &dg, &G), MDR_OK);
+            assert_int_equal(mdr_profile_eval_f64(&ref, x, &g0, &dg0, &G0), MDR_OK);
+            wg = fmax(wg, fabs(g - g0) / gm);
+            wd = fmax(wd, fabs(dg - dg0) / dgm);
+            wG = fmax(wG, fabs(G - G0) / Gm);
+        }
+        print_message("  %5d  %.3e %.3e %.3e\n", m - 1, wg, wd, wG);
+        lnN[k] = log(m - 1.0);
+        eg[k] = log(wg);
+        ed[k] = log(wd);
+        eG[k] = log(wG);
+    }
+    og = -(eg[5] - eg[2]) / (lnN[5] - lnN[2]);
+    od = -(ed[5] - ed[2]) / (lnN[5] - lnN[2]);
+    oG = -(eG[5] - eG[2]) / (lnN[5] - lnN[2]);
+    print_message("  orders: g %.2f, g' %.2f, G %.2f\n", og, od, oG);
+    assert_true(og >= 2.3 && oG >= 2.3 && od >= 1.3);
+}
+
+/* a worn tip (flat for r < b, b at a node, above the threshold 0.7475 a*
+ * under load and its grips counterpart): Kendall's separation at a = b,
+ * F = -sqrt(8 pi b^3 E* w), d = -sqrt(2 pi b w/E*), in the contact module,
+ * under load, grips and a machine, to 1e-9 (f64) and REL32 (f32) */
+static void table_worn_tip_kendall(void **st)
+{
+    const double R = 1e-5, E = 1e6, w = 0.05, astar = cbrt(9 * M_PI * R * R * w / (8 * E));
+    (void)st;
+    for (int k = 0; k < 3; k++) {
+        const int m = 1201;
+        double rmax = 4 * astar, b = tr[0];
+        int kb = (int)((0.9 + 0.3 * k) * astar / rmax * (m - 1));
+        double par[2];
+        mdr_contact_f64 t;
+        mdr_contact_f32 tf32;
+        for (int i = 0; i < m; i++) {
+            tr[i] = rmax * i / (m - 1);
+        }
+        b = tr[kb];
+        par[0] = R;
+        par[1] = b;
+        sample(f_flat, par, m, rmax, 0.3); /* a height offset: only slopes enter */
+        assert_int_equal(mdr_contact_init_table_f64(&t, tr, ts, (uint16_t)m, E, w), MDR_OK);
+        assert_int_equal(mdr_contact_init_table_f32(&tf32, trf, tsf, (uint16_t)m, (float)E, (float)w), MDR_OK);
+        for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+            mdr_critstate_f64 o;
+            mdr_critstate_f32 of;
+            double a0, Fk = -sqrt(8 * M_PI * b * b * b * E * w), dk = -sqrt(2 * M_PI * b * w / E);
+            float a0f;
+            assert_int_equal(mdr_default_start_f64(&t, &a0), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&t, ctl, 2 * E * b, a0, &o), MDR_OK);
+            assert_int_equal(mdr_default_start_f32(&tf32, &a0f), MDR_OK);
+            assert_int_equal(mdr_critical_f32(&tf32, ctl, (float)(2 * E * b), a0f, &of), MDR_OK);
+            print_message("worn tip b = %.3f a*, control %u: F/Kendall - 1 = %.1e (f64), %.1e (f32)\n", b / astar,
+                          ctl, o.F / Fk - 1, of.F / Fk - 1);
+            assert_true(o.a == b);
+            rel_le(o.F, Fk, 0, KENDALL, "worn tip: Kendall's F at the rim");
+            rel_le(o.d, dk, 0, KENDALL, "worn tip: Kendall's d at the rim");
+            rel_le(of.F, Fk, 0, REL32, "worn tip f32");
+        }
+    }
+}
+
+/* a sampled flattened tip below its threshold, under all controls, against
+ * the analytic flattened tip (the table reproduces it to rounding); and a
+ * sampled sphere against the exact sphere within the model's error */
+static void table_critical_vs_profiles(void **st)
+{
+    const double R = 1e-5, E = 1e6, w = 0.05, astar = cbrt(9 * M_PI * R * R * w / (8 * E));
+    (void)st;
+    {
+        const int m = 801;
+        double rmax = 4 * astar, b, par[2];
+        mdr_contact_f64 t, ref;
+        int kb = (int)(0.5 * astar / rmax * (m - 1));
+        for (int i = 0; i < m; i++) {
+            tr[i] = rmax * i / (m - 1);
+        }
+        b = tr[kb];
+        par[0] = R;
+        par[1] = b;
+        sample(f_flat, par, m, rmax, 0);
+        assert_int_equal(mdr_contact_init_table_f64(&t, tr, ts, (uint16_t)m, E, w), MDR_OK);
+        ref = mk64(MDR_PROFILE_FLATTIP, R, b, 0, E, w);
+        for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+            mdr_critstate_f64 o, o0;
+            double a0, a00;
+            assert_int_equal(mdr_default_start_f64(&t, &a0), MDR_OK);
+            assert_int_equal(mdr_default_start_f64(&ref, &a00), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&t, ctl, 2 * E * astar, a0, &o), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&ref, ctl, 2 * E * astar, a00, &o0), MDR_OK);
+            rel_le(o.a, o0.a, 0, 1e-9, "sampled flattened tip: critical radius");
+            rel_le(o.F, o0.F, 0, 1e-9, "sampled flattened tip: critical force");
+            print_message("sampled flattened tip b = 0.5 a*, control %u: a/a* = %.6f, F_min = %.9g (analytic %.9g)\n",
+                          ctl, o.a / astar, o.F_min, o0.F_min);
+            rel_le(o.F_min, o0.F_min, 0, 1e-9, "sampled flattened tip: most tensile force");
+            assert_int_equal(o.jumps, o0.jumps);
+        }
+    }
+    {
+        const double par[1] = {R};
+        mdr_contact_f64 t, ref = mk64(MDR_PROFILE_SPHERE, R, 0, 0, E, w);
+        sample(f_sph, par, 2001, 0.9 * R, 0);
+        assert_int_equal(mdr_contact_init_table_f64(&t, tr, ts, 2001, E, w), MDR_OK);
+        for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+            mdr_critstate_f64 o, o0;
+            double a0;
+            assert_int_equal(mdr_default_start_f64(&t, &a0), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&t, ctl, 2 * E * astar, a0, &o), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&ref, ctl, 2 * E * astar, a0, &o0), MDR_OK);
+            print_message("sampled sphere (2000 intervals to 0.9 R), control %u: F %.1e, a %.1e off the exact sphere\n",
+                          ctl, fabs(o.F / o0.F - 1), fabs(o.a / o0.a - 1));
+            rel_le(o.F, o0.F, 0, TAB_SPH, "sampled sphere: critical force (model error)");
+            rel_le(o.a, o0.a, 0, TAB_SPH, "sampled sphere: critical radius");
+        }
+    }
+}
+
+/* f32 with a 1 m height offset on a 10 um sphere (the issue: 46 % before
+ * the slopes were formed in double) */
+static void table_f32_height_offset(void **st)
+{
+    const double R = 10e-6, E = 1e6, w = 0.05, par[1] = {R};
+    mdr_contact_f32 t;
+    mdr_contact_f64 ref = mk64(MDR_PROFILE_SPHERE, R, 0, 0, E, w);
+    (void)st;
+    sample(f_sph, par, 401, 0.8 * R, 1.0);
+    assert_int_equal(mdr_contact_init_table_f32(&t, trf, tsf, 401, (float)E, (float)w), MDR_OK);
+    for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+        mdr_critstate_f32 o;
+        mdr_critstate_f64 o0;
+        float a0;
+        double a00;
+        assert_int_equal(mdr_default_start_f32(&t, &a0), MDR_OK);
+        assert_int_equal(mdr_critical_f32(&t, ctl, (float)(2e6 * 2.6e-6), a0, &o), MDR_OK);
+        assert_int_equal(mdr_default_start_f64(&ref, &a00), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&ref, ctl, 2e6 * 2.6e-6, a00, &o0), MDR_OK);
+        print_message("f32 table with a 1 m offset, control %u: pull-off F/F_sphere - 1 = %.1e\n", ctl,
+                      (double)o.F / o0.F - 1);
+        rel_le(o.F, o0.F, 0, 1e-5, "f32 table with a 1 m height offset: pull-off");
+    }
+}
+
+/* eq, stress and curves of a table through the public calls */
+static void table_eq_and_stress(void **st)
+{
+    const double R = 1e-5, par[1] = {R};
+    mdr_contact_f64 t, ref = mk64(MDR_PROFILE_PARABOLOID, R, 0, 0, 1e6, 0.05);
+    mdr_contact_f32 tf32;
+    (void)st;
+    sample(f_par, par, 61, 12e-6, 0);
+    assert_int_equal(mdr_contact_init_table_f64(&t, tr, ts, 61, 1e6, 0.05), MDR_OK);
+    assert_int_equal(mdr_contact_init_table_f32(&tf32, trf, tsf, 61, 1e6f, 0.05f), MDR_OK);
+    for (double a = 1e-7; a < 12e-6; a *= 1.3) {
+        mdr_eqstate_f64 e, e0;
+        mdr_eqstate_f32 ef;
+        assert_int_equal(mdr_eq_f64(&t, a, &e), MDR_OK);
+        assert_int_equal(mdr_eq_f64(&ref, a, &e0), MDR_OK);
+        assert_int_equal(mdr_eq_f32(&tf32, (float)a, &ef), MDR_OK);
+        rel_le(e.F, e0.F, 2e6 * a * (a * a / R + e0.dl), 1e-13, "table eq F");
+        rel_le(e.dF_da, e0.dF_da, 2e6 * (a * a / R + e0.dl), 1e-12, "table eq dF/da");
+        rel_le(ef.F, e0.F, 2e6 * a * (a * a / R + e0.dl), REL32, "table eq F (f32)");
+        for (double s = 0; s < 0.99; s += 0.14) {
+            double sg, sg0;
+            assert_int_equal(mdr_stress_f64(&t, a, s * a, &sg), MDR_OK);
+            assert_int_equal(mdr_stress_f64(&ref, a, s * a, &sg0), MDR_OK);
+            rel_le(sg, sg0, fabs(sg0) + 1e6 * (a * a / R + e0.dl) / (M_PI * a), 1e-9, "table stress");
+        }
+    }
+}
+
+/* every error path of mdr_contact_init_table, nothing written on error */
+static void table_errors(void **st)
+{
+    double r[5] = {0, 1, 2, 3, 4}, s[4] = {0, 1, 2, 3};
+    float rf[5] = {0, 1, 2, 3, 4}, sf[4] = {0, 1, 2, 3};
+    mdr_contact_f64 c;
+    mdr_contact_f32 cf;
+    double g;
+    (void)st;
+    memset(&c, GUARD, sizeof c);
+    memset(&cf, GUARD, sizeof cf);
+    assert_int_equal(mdr_contact_init_table_f64(NULL, r, s, 5, 1, 1), MDR_E_NULL);
+    assert_int_equal(mdr_contact_init_table_f64(&c, NULL, s, 5, 1, 1), MDR_E_NULL);
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, NULL, 5, 1, 1), MDR_E_NULL);
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 2, 1, 1), MDR_E_TABLE);
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, 0, 1), MDR_E_PARAM);
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, 1, -1), MDR_E_PARAM);
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, NAN, 1), MDR_E_NONFINITE);
+    assert_int_equal(mdr_contact_init_table_f32(&cf, rf, sf, 5, 1, INFINITY), MDR_E_NONFINITE);
+    r[0] = 0.5;
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, 1, 1), MDR_E_TABLE);
+    r[0] = 0;
+    r[3] = 2;
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, 1, 1), MDR_E_TABLE);
+    r[3] = NAN;
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, 1, 1), MDR_E_NONFINITE);
+    r[3] = 3;
+    s[2] = INFINITY;
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, 1, 1), MDR_E_NONFINITE);
+    sf[1] = 3e38f; /* finite slopes, g beyond float */
+    assert_int_equal(mdr_contact_init_table_f32(&cf, rf, sf, 5, 1, 1), MDR_E_OVERFLOW);
+    assert_true(untouched(&c, sizeof c));
+    assert_true(untouched(&cf, sizeof cf));
+    /* the general init refuses the kind */
+    {
+        double p[3] = {1, 1, 1};
+        assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_TABLE, p, 1, 1), MDR_E_KIND);
+        assert_true(untouched(&c, sizeof c));
+    }
+    /* outside the samples */
+    s[2] = 2;
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 5, 1, 1), MDR_OK);
+    assert_int_equal(mdr_profile_eval_f64(&c, 4.0, &g, NULL, NULL), MDR_OK);
+    assert_int_equal(mdr_profile_eval_f64(&c, 4.000001, &g, NULL, NULL), MDR_E_RADIUS);
+    assert_int_equal(mdr_profile_eval_f64(&c, 0.0, &g, NULL, NULL), MDR_E_RADIUS);
+    /* a table ending on the unstable branch: no stable state to start from */
+    {
+        const double par[1] = {1e-5};
+        mdr_critstate_f64 o;
+        double a0;
+        sample(f_par, par, 21, 1e-6, 0);
+        assert_int_equal(mdr_contact_init_table_f64(&c, tr, ts, 21, 1e6, 0.05), MDR_OK);
+        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+        memset(&o, GUARD, sizeof o);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, a0, &o), MDR_E_RADIUS);
+        assert_true(untouched(&o, sizeof o));
+    }
+#if MDR_CFG_SCENE
+    /* the scene of a table is not a monomial */
+    {
+        mdr_scene_f64 sc;
+        assert_int_equal(mdr_scene_init_contact_f64(&sc, &c, 0, 0, MDR_OUT_FORCE, NULL), MDR_E_KIND);
+    }
+#endif
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(powerlaw_below_one),
+        cmocka_unit_test(issue_powerlaw_example),
+        cmocka_unit_test(sphere_near_R),
+        cmocka_unit_test(flattip_structure),
+        cmocka_unit_test(starts_are_hints),
+        cmocka_unit_test(default_start_is_stable),
+        cmocka_unit_test(most_tensile_force),
+        cmocka_unit_test(wavy_gripper_scale),
+        cmocka_unit_test(table_exact_for_quadratics),
+        cmocka_unit_test(table_order),
+        cmocka_unit_test(table_worn_tip_kendall),
+        cmocka_unit_test(table_critical_vs_profiles),
+        cmocka_unit_test(table_f32_height_offset),
+        cmocka_unit_test(table_eq_and_stress),
+        cmocka_unit_test(table_errors),
+    };
+    return cmocka_run_group_tests_name("critical", tests, NULL, NULL);
+}
+
+#endif /* applies */
