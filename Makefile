@@ -499,3 +499,5 @@ deps:
 
 clean:
 	rm -rf $(B)
+
+include mk/fit.mk

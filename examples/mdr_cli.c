@@ -227,6 +227,8 @@ static int parse_count(double v, long lo, long hi, long *out)
     return 1;
 }
 
+#include "mdr_fit_cli.h"
+
 int main(int argc, char **argv)
 {
     static const char *cmds[] = {"eq", "critical", "curve", "stress", "cycle", "table"};
@@ -238,6 +240,9 @@ int main(int argc, char **argv)
     int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_n = 0, have_steps = 0;
     int used[32] = {0};
 
+    if (argc >= 2 && strcmp(argv[1], "fit") == 0) {
+        return fit_main(argc, argv);
+    }
     memset(&A, 0, sizeof A);
     A.springs = 1024;
     A.name = "mdr_tip";
