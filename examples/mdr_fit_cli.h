@@ -100,7 +100,11 @@ static mdr_status fit_one(const struct fit_args *A, const double *z, const doubl
         o->st = MDR_E_SIZE;
         return o->st;
     }
-    o->st = A->f64 ? fit_run_f64(A, z, F, n, s, o) : fit_run_f32(A, z, F, n, s, o);
+    if (A->f64) {
+        o->st = fit_run_f64(A, z, F, n, s, o);
+    } else {
+        o->st = fit_run_f32(A, z, F, n, s, o);
+    }
     return o->st;
 }
 
@@ -365,14 +369,14 @@ static int fit_curve_cmd(const struct fit_args *A)
     fit_curve c;
     fit_scratch s = {NULL, 0};
     int rc = 0, header = 0, first = 1;
-    long len, bad;
+    long bad;
     memset(&c, 0, sizeof c);
     r.name = A->file;
     r.fp = fopen(A->file, "rb");
     if (r.fp == NULL) {
         return usage_error("cannot open", A->file);
     }
-    while (rc == 0 && (len = fit_getline(&r)) >= 0) {
+    while (rc == 0 && fit_getline(&r) >= 0) {
         char *f[3][2];
         double z, F;
         if (fit_skip(r.buf)) {
@@ -547,11 +551,14 @@ static int fit_seen_add(fit_seen *t, const char *label)
             return 1;
         }
     }
-    t->slot[i] = malloc(strlen(label) + 1);
-    if (t->slot[i] == NULL) {
-        return -1;
+    {
+        size_t len = strlen(label) + 1;
+        t->slot[i] = malloc(len);
+        if (t->slot[i] == NULL) {
+            return -1;
+        }
+        memcpy(t->slot[i], label, len);
     }
-    strcpy(t->slot[i], label);
     t->n++;
     return 0;
 }
@@ -723,7 +730,7 @@ static int fit_map_cmd(const struct fit_args *A)
     fit_pool P;
     pthread_t *th;
     fit_curve *buf[2];
-    size_t chunk = (size_t)(32 * A->jobs), i;
+    size_t chunk = (size_t)32 * (size_t)A->jobs, i;
     long n[2], total = 0;
     int cur = 0, rc = 0, tty = isatty(STDERR_FILENO), nth = 0, failed = 0;
     unsigned long curves = 0;

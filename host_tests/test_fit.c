@@ -5,6 +5,11 @@
  * noise, offsets in z and F, coarse and fine sampling, the three regimes,
  * f32 and f64; every bad input.
  *
+ * On the emulated Cortex-M4F (make target-test, f64 in soft double) the
+ * curves are shorter (the profiles coarse only, without the wavy one) and
+ * the Monte Carlo has NMC = 6 copies; the tolerances are the same or
+ * derived from NMC.
+ *
  * Tolerances (relative unless said):
  *   TOL_MODEL = 1e-11: the library's forward model against the closed form,
  *     whole retract curves, relative to max|F| (both in double). Near the
@@ -23,11 +28,13 @@
  *     d = z - F/k_m, up to 40x smaller than z through a soft lever);
  *   noise: Monte Carlo over NMC noisy copies (Gaussian, sigma = 1 % of the
  *     pull-off force) of one closed-form curve per regime: the bias of the
- *     mean estimate within 4 standard errors of the mean (4 sd/sqrt(NMC)),
- *     the scatter sd of the estimates within a factor 1.6 of the mean
- *     standard error the fit reports (the spread of a sample sd over NMC =
- *     40 copies is about 11 %: 1.6 is 4 of them), and every single estimate
- *     within 5 reported standard errors of the truth (the reported errors
+ *     mean estimate within 4 standard errors of the mean (4 s/sqrt(NMC),
+ *     s the larger of the copies' scatter sd and the mean reported error),
+ *     the scatter sd within a factor RATIO of the mean standard error the
+ *     fit reports, RATIO = 1 + 4/sqrt(2 (NMC - 1)): 4 standard deviations
+ *     of a sample sd over NMC copies (1.45 for the host's 40; measured worst
+ *     1.30; not checked on the target's 6, too few for a sample sd), and
+ *     every single estimate within 5 reported standard errors of the truth (the reported errors
  *     carry the fold's position within the sampling step: mdr_fit_curve);
  *   TOL_TP = 1e-9: the two-point method when the zero-force point and the
  *     fold are samples (it is then exact for the model; measured 1e-12);
@@ -49,7 +56,7 @@
 #include "mdr.h"
 #include "applies.h"
 
-#if !(MDR_CFG_FIT && MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_ALL_PROFILES)
+#if !(MDR_CFG_HAS_FIT && MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_ALL_PROFILES)
 MDR_TEST_NOT_APPLICABLE("the fit, f32, f64 and every profile")
 #else
 #include "test_util.h"
@@ -61,13 +68,24 @@ MDR_TEST_NOT_APPLICABLE("the fit, f32, f64 and every profile")
 #define TOL_TP_GRID 0.5
 #define TOL_MU 1e-13
 #ifdef MDR_TARGET_TEST
-#define NMC 8 /* soft double on the M4F: fewer copies (the test's bounds scale with them) */
+#define NMC 6 /* soft double on the M4F: fewer copies and points (the bounds scale with them) */
 #define NFINE 600
+#define NPROF 200
+#define NPROF_SIZES 1 /* the coarse curves only */
+#define NNOISE 300
+#define NTP 500
+#define NAPP 150
 #else
 #define NMC 40
 #define NFINE 3000
+#define NPROF 800
+#define NPROF_SIZES 2
+#define NNOISE 1000
+#define NTP 2000
+#define NAPP 300
 #endif
 #define NMAX 4000
+#define RATIO (1.0 + 4.0 / sqrt(2.0 * (NMC - 1)))
 
 /* ---- JKR paraboloid through a cantilever, libm only --------------------- */
 
@@ -310,7 +328,9 @@ static void test_roundtrip_profiles(void **state)
         {MDR_PROFILE_POWERLAW, {1e12, 3.0, 0}, 1e9, 0.05, 50.0},
         {MDR_PROFILE_POWERLAW, {1e3, 1.5, 0}, 1e9, 0.05, 5.0},
         {MDR_PROFILE_FLATTIP, {30e-9, 3e-9, 0}, 1e9, 0.05, 2.0},
+#ifndef MDR_TARGET_TEST /* Struve functions at every point: 100x the others, minutes in soft double */
         {MDR_PROFILE_WAVY, {30e-9, 0.02e-9, 10e-9}, 1e9, 0.05, 2.0},
+#endif
     };
     size_t k;
     (void)state;
@@ -322,7 +342,7 @@ static void test_roundtrip_profiles(void **state)
         mdr_fit_opts_f64 o;
         mdr_fit_result_f64 r;
         double as, ztop, zf, zbot, z0 = -1.5e-6, Fb = 0.3e-9;
-        int i, n = 800, s;
+        int i, n = NPROF, s;
         assert_int_equal(mdr_contact_init_f64(&c, cases[k].kind, cases[k].p, cases[k].E, cases[k].w), MDR_OK);
         assert_int_equal(mdr_contact_init_f64(&tip, cases[k].kind, cases[k].p, 1.0, 0.0), MDR_OK);
         assert_int_equal(mdr_default_start_f64(&c, &as), MDR_OK);
@@ -331,7 +351,7 @@ static void test_roundtrip_profiles(void **state)
         zf = cs.d + cs.F / cases[k].km;
         ztop = e.d + e.F / cases[k].km;
         zbot = zf - 0.3 * (ztop - zf);
-        for (s = 0; s < 2; s++) {
+        for (s = 0; s < NPROF_SIZES; s++) {
             int nn = s ? n : 40;
             for (i = 0; i < nn; i++) {
                 zs[i] = z0 + ztop + (zbot - ztop) * i / (nn - 1);
@@ -344,7 +364,8 @@ static void test_roundtrip_profiles(void **state)
             track(r.pull_off_F, cs.F, 0, TOL_RT, "pull-off force");
         }
     }
-    print_message("forward-model round trip, 7 profiles (f64): worst %.2g\n", worst);
+    print_message("forward-model round trip, %u profiles (f64): worst %.2g\n",
+                  (unsigned)(sizeof cases / sizeof cases[0]), worst);
 }
 
 static void test_roundtrip_f32(void **state)
@@ -389,7 +410,7 @@ static void test_noise(void **state)
         double Fpo, z0 = -2e-6, Fb = 1.5 * p->w * p->R, sig, est[4][NMC], rep[4] = {0, 0, 0, 0};
         double truth[4] = {p->E, p->w, z0, Fb};
         static const char *names[4] = {"E", "w", "z0", "F_b"};
-        int i, j, n = 1000;
+        int i, j, n = NNOISE;
         jkr_curve(p, z0, Fb, n, zs, Fm, 0, &Fpo);
         sig = 0.01 * fabs(Fpo);
         mdr_fit_defaults_f64(&o, p->km);
@@ -427,8 +448,10 @@ static void test_noise(void **state)
             sd = sqrt(v);
             print_message("regime %d %-3s: bias %+.2f sd/sqrt(N), sd %.3g, reported %.3g (ratio %.2f)\n", k,
                           names[i], (m - truth[i]) / (sd / sqrt(NMC)), sd, rep[i], sd / rep[i]);
-            assert_true(fabs(m - truth[i]) <= 4 * sd / sqrt(NMC));
-            assert_true(sd / rep[i] < 1.6 && rep[i] / sd < 1.6);
+            assert_true(fabs(m - truth[i]) <= 4 * (sd > rep[i] ? sd : rep[i]) / sqrt(NMC));
+            if (NMC >= 20) {
+                assert_true(sd / rep[i] < RATIO && rep[i] / sd < RATIO);
+            }
         }
     }
 }
@@ -446,7 +469,7 @@ static void test_two_point(void **state)
         mdr_fit_opts_f64 o;
         mdr_fit_result_f64 r;
         double Fpo, z0 = 1e-7, Fb = 0.0;
-        int n = 2000, last = jkr_curve(p, z0, Fb, n, zs, Fs, 1, &Fpo);
+        int n = NTP, last = jkr_curve(p, z0, Fb, n, zs, Fs, 1, &Fpo);
         mdr_fit_defaults_f64(&o, p->km);
         o.method = MDR_FIT_TWO_POINT;
         assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r), MDR_OK);
@@ -481,7 +504,7 @@ static void test_approach(void **state)
         mdr_fit_opts_f64 o;
         mdr_fit_result_f64 r;
         double pp[3] = {p->R, 0, 0}, z0 = 5e-9, Fb = 1e-11, wadv = ratios[k] * p->w, Fpo;
-        int i, na = 300, nr = 700, last = jkr_curve(p, z0, Fb, nr, zs + na, Fs + na, 0, &Fpo);
+        int i, na = NAPP, nr = 7 * NAPP / 3, last = jkr_curve(p, z0, Fb, nr, zs + na, Fs + na, 0, &Fpo);
         /* approach: from the retract's lowest z up to its top */
         for (i = 0; i < na; i++) {
             zs[i] = zs[na + nr - 1] + (zs[na] - zs[na + nr - 1]) * i / (na - 1);
