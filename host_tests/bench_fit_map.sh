@@ -36,5 +36,7 @@ echo "| --- | ---: | ---: |"
 awk -v n="$N" -v t="$t1" 'BEGIN { printf "| --jobs 1 | %.2f s | %.0f |\n", t, n / t }'
 awk -v n="$N" -v t="$tn" -v c="$cores" -v t1="$t1" \
     'BEGIN { printf "| --jobs %d (all cores) | %.2f s | %.0f (x %.2f) |\n", c, t, n / t, t1 / t }'
+awk -v t="$t1" -v n="$N" -v c="$cores" \
+    'BEGIN { printf "\nA 256 x 256 map (65 536 such curves) at the --jobs 1 rate on %d cores: %.0f s.\n", c, 65536 / (n / t) / c }'
 echo
 echo "Load average when measured: $load (the machine's $cores cores are shared; the threaded figure counts what the other processes left)."
