@@ -28,6 +28,7 @@
 #include <valgrind/callgrind.h>
 
 #include "mdr.h"
+#include "noise.h"
 
 #define NPTS 1000
 #define NCURVES 32
@@ -41,20 +42,6 @@ static volatile double sink;
 
 static const double R = 20e-9, E = 1e9, W = 0.05, KM = 0.2, Z0 = 1e-6, FB = 1e-10;
 
-static uint64_t rng = 88172645463325252ull;
-static double gauss(void)
-{
-    double u1, u2;
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    u1 = ((double)(rng >> 11) + 0.5) / 9007199254740992.0;
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    u2 = ((double)(rng >> 11) + 0.5) / 9007199254740992.0;
-    return sqrt(-2 * log(u1)) * cos(2 * M_PI * u2);
-}
 
 static void setup(void)
 {

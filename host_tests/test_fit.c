@@ -60,6 +60,7 @@
 MDR_TEST_NOT_APPLICABLE("the fit, f32, f64 and every profile")
 #else
 #include "test_util.h"
+#include "noise.h"
 
 #define TOL_MODEL 1e-11
 #define TOL_RT 5e-8
@@ -196,21 +197,6 @@ static int jkr_curve(const jkr_par *p, double z0, double Fb, int n, double *z, d
     return last;
 }
 
-/* deterministic Gaussian noise (xorshift64 + Box-Muller) */
-static uint64_t rng = 88172645463325252ull;
-static double gauss(void)
-{
-    double u1, u2;
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    u1 = ((double)(rng >> 11) + 0.5) / 9007199254740992.0;
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    u2 = ((double)(rng >> 11) + 0.5) / 9007199254740992.0;
-    return sqrt(-2 * log(u1)) * cos(2 * M_PI * u2);
-}
 
 static double work64[2 * NMAX];
 static float work32[2 * NMAX];

@@ -11,16 +11,7 @@
 # the indentation; measured 4e-5).
 set -u
 MDR=${1:-build/host/mdr}
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-near() { # near VALUE WANT RELTOL
-    awk -v x="$1" -v y="$2" -v t="$3" 'BEGIN { d = x - y; if (d < 0) d = -d; s = y < 0 ? -y : y; exit !(d <= t * s) }'
-}
-key() { # key JSON NAME -> value
-    printf '%s' "$1" | tr -d '{}' | tr ',' '\n' | awk -F': ' -v k="\"$2\"" '$1 ~ k { gsub(/ /, "", $2); print $2 }'
-}
+. "$(dirname "$0")/cli_lib.sh"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 TIP="--profile paraboloid --R 20e-9"

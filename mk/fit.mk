@@ -18,9 +18,9 @@ TGT_TESTS_m4 += test_fit
 TGT_RUNS += $(B)/tgt-m4/test_fit.run
 DEB_PKGS += gnuplot-nox valgrind
 
-$(B)/host/test_fit: host_tests/test_fit.c host_tests/test_util.h $(B)/host/libmdr.a
+$(B)/host/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_fit: host_tests/test_fit.c host_tests/test_util.h $(B)/san/libmdr.a
+$(B)/san/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
 host-tests: $(B)/host/test_fit fit-cli
 san-tests: $(B)/san/test_fit
@@ -35,7 +35,7 @@ fit-cli: $(B)/host/mdr
 	@echo "== fit cli"; bash host_tests/test_fit_cli.sh $(B)/host/mdr
 
 # ---- benchmark ----------------------------------------------------------------
-$(B)/host/bench_fit: host_tests/bench_fit.c $(B)/host/libmdr.a
+$(B)/host/bench_fit: host_tests/bench_fit.c host_tests/noise.h $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -O2 $< $(B)/host/libmdr.a -lm -o $@
 # the map figure: curves of the bench's scene through `mdr fit --map`, one
 # thread and all cores (wall clock of the same run)
@@ -64,3 +64,4 @@ bench: bench-fit
 fit-plot: $(B)/host/mdr
 	@mkdir -p $(B)/fitplot docs
 	bash host_tests/fit_plot.sh $(B)/host/mdr $(B)/fitplot docs/fit_curve.png
+$(B)/tgt-m4/test_fit.elf: host_tests/noise.h host_tests/test_util.h
