@@ -3,6 +3,8 @@
 # approach-retract curve made by the spring engine (`mdr cycle`, machine
 # control), fitted with `mdr fit --approach --model`, drawn with gnuplot:
 # data and fitted model, force [nN] against z - z0 [nm].
+# Also leaves OUTDIR/curve.csv and OUTDIR/map.csv (that curve and a flat
+# one), the examples of docs/fitting.md.
 # Usage: bash host_tests/fit_plot.sh build/host/mdr OUTDIR docs/fit_curve.png
 set -eu
 MDR=$1
@@ -20,6 +22,9 @@ TIP="--profile paraboloid --R 20e-9"
         { u = 0; for (k = 0; k < 12; k++) u += rand(); printf "%.17g,%.17g\n", $2 + 2e-6, $4 + 3e-10 + 1e-10 * (u - 6) }' \
     > "$OUT/curve.csv"
 "$MDR" fit --curve "$OUT/curve.csv" $TIP --k-machine 0.2 --approach --model "$OUT/model.csv" > "$OUT/fit.json"
+# a map for docs/fitting.md's example: this curve, and one without contact
+{ echo "curve,z,F"; awk -F, 'NR > 1 { print "x0y0," $0 }' "$OUT/curve.csv"
+  awk -F, 'NR > 1 { print "x1y0," $1 ",1e-12" }' "$OUT/curve.csv"; } > "$OUT/map.csv"
 cat "$OUT/fit.json"
 get() { tr -d '{}' < "$OUT/fit.json" | tr ',' '\n' | awk -F': ' -v k="\"$1\"" '$1 ~ k { gsub(/[ "]/, "", $2); print $2 }'; }
 z0=$(get z0)
