@@ -708,11 +708,21 @@ static void fit_map_row(const fit_curve *c, int f64)
     }
 }
 
-static void fit_progress(long done_bytes, long total, unsigned long curves, time_t t0)
+/* seconds on a monotonic clock */
+static double fit_now(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0) {
+        return 0.0;
+    }
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void fit_progress(long done_bytes, long total, unsigned long curves, double t0)
 {
     char bar[41];
     double f = total > 0 ? (double)done_bytes / (double)total : 0.0;
-    double dt = difftime(time(NULL), t0);
+    double dt = fit_now() - t0;
     int i, k = (int)(f * 40.0);
     for (i = 0; i < 40; i++) {
         bar[i] = i < k ? '=' : ' ';
@@ -734,7 +744,7 @@ static int fit_map_cmd(const struct fit_args *A)
     long n[2], total = 0;
     int cur = 0, rc = 0, tty = isatty(STDERR_FILENO), nth = 0, failed = 0;
     unsigned long curves = 0;
-    time_t t0 = time(NULL);
+    double t0 = fit_now();
     r.name = A->file;
     r.fp = fopen(A->file, "rb");
     if (r.fp == NULL) {

@@ -16,7 +16,7 @@ TESTS += test_fit
 SAN_TESTS += test_fit
 TGT_TESTS_m4 += test_fit
 TGT_RUNS += $(B)/tgt-m4/test_fit.run
-DEB_PKGS += gnuplot-nox valgrind
+DEB_PKGS += gnuplot-nox
 
 $(B)/host/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/host/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@

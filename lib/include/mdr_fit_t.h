@@ -37,7 +37,8 @@ typedef struct {
     MDR_T z_e;     /**< equilibrium distance of the Tabor parameter [m], > 0
                         (default MDR_FIT_Z_E_DEFAULT) */
     MDR_T E0, w0;  /**< first guesses of E* [Pa] and w [J/m^2]; both > 0 to use
-                        them, both 0 (default) for the two-point guess */
+                        them (MDR_FIT_TWO_POINT: where its search starts),
+                        both 0 (default) for the two-point guess */
     uint8_t method;   /**< MDR_FIT_FULL (default) or MDR_FIT_TWO_POINT */
     uint8_t approach; /**< 1: also fit w_adv to the approach part (E*, z0, F_b
                            held at the retract's values); default 0 */
@@ -50,8 +51,11 @@ typedef struct {
     MDR_T z0;         /**< base position of first touch at zero force [m] */
     MDR_T F_base;     /**< force baseline F_b [N] */
     MDR_T E_err, w_err, z0_err, F_base_err; /**< one standard error each, from
-                           the Jacobian at the result: sqrt of the diagonal of
-                           s^2 (J^T J)^-1, s^2 = sum of squared residuals/(n-4) */
+                           the Jacobian at the result: s^2 (J^T J)^-1, s^2 = sum
+                           of squared residuals/(n-4), with the fold's position
+                           between the last contact and the first free sample
+                           as a nuisance of at most that interval's spread
+                           (mdr_fit.inc) */
     MDR_T rms;        /**< root mean square residual force over the n points [N] */
     MDR_T pull_off_F; /**< the model's pull-off force (at the fold), relative to
                            the baseline [N] (negative) */
