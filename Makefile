@@ -542,3 +542,4 @@ clean:
 	rm -rf $(B)
 
 include mk/python.mk
+include mk/fit.mk

@@ -202,6 +202,28 @@ static const struct {
     {"wavy", MDR_PROFILE_WAVY, {"--R", "--h", "--lambda"}},
 };
 
+/* The parameters of profile pi (profiles[pi].flags, in order) from the n
+ * flags given (names, vals) into p[]; used[i] set for each flag taken.
+ * Returns NULL, or the name of a parameter not given. */
+static const char *profile_params(int pi, const char *const *names, const double *vals, int n,
+                                  int *used, double p[3])
+{
+    int k, i;
+    for (k = 0; k < 3 && profiles[pi].flags[k] != NULL; k++) {
+        int found = 0;
+        for (i = 0; i < n; i++) {
+            if (strcmp(names[i], profiles[pi].flags[k]) == 0) {
+                p[k] = vals[i];
+                used[i] = found = 1;
+            }
+        }
+        if (!found) {
+            return profiles[pi].flags[k];
+        }
+    }
+    return NULL;
+}
+
 static int parse_count(double v, long lo, long hi, long *out)
 {
     if (!(v >= (double)lo && v <= (double)hi) || v != (double)(long)v) {
@@ -210,6 +232,8 @@ static int parse_count(double v, long lo, long hi, long *out)
     *out = (long)v;
     return 1;
 }
+
+#include "mdr_fit_cli.h"
 
 int main(int argc, char **argv)
 {
@@ -222,6 +246,9 @@ int main(int argc, char **argv)
     int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_n = 0, have_steps = 0;
     int used[32] = {0};
 
+    if (argc >= 2 && strcmp(argv[1], "fit") == 0) {
+        return fit_main(argc, argv);
+    }
     memset(&A, 0, sizeof A);
     A.springs = 1024;
     A.name = "mdr_tip";
@@ -333,16 +360,10 @@ int main(int argc, char **argv)
             return usage_error("unknown profile", profile);
         }
         A.kind = profiles[pi].kind;
-        for (k = 0; k < 3 && profiles[pi].flags[k] != NULL; k++) {
-            int found = 0;
-            for (i = 0; i < nflag; i++) {
-                if (strcmp(names[i], profiles[pi].flags[k]) == 0) {
-                    A.p[k] = vals[i];
-                    used[i] = found = 1;
-                }
-            }
-            if (!found) {
-                return usage_error("missing profile parameter", profiles[pi].flags[k]);
+        {
+            const char *missing = profile_params(pi, names, vals, nflag, used, A.p);
+            if (missing != NULL) {
+                return usage_error("missing profile parameter", missing);
             }
         }
     }

@@ -15,6 +15,9 @@
      MDR_CFG_PROFILE_FLATPUNCH && MDR_CFG_PROFILE_SPHERE && MDR_CFG_PROFILE_FLATTIP &&             \
      MDR_CFG_PROFILE_WAVY && MDR_CFG_PROFILE_TABLE)
 
+/* the fit (MDR_CFG_FIT) stands on the contact module of a float arithmetic */
+#define MDR_CFG_HAS_FIT (MDR_CFG_FIT && (MDR_CFG_F32 || MDR_CFG_F64))
+
 #define MDR_TEST_NOT_APPLICABLE(needs)                                                             \
     int main(void)                                                                                 \
     {                                                                                              \

@@ -28,7 +28,7 @@ B=build/matrix
 WARN="-Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow -Wvla -Werror"
 LIBFLAGS="-std=c99 -ffreestanding -fno-math-errno -ffunction-sections -fdata-sections -O1 $WARN -Ilib/include -Iport/host"
 TFLAGS="-std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -O1 -Ilib/include -Iref -Iport/host -Ihost_tests"
-SUITES="test_config test_unit test_vectors test_engine test_q31 test_scene test_step test_critical"
+SUITES="test_config test_unit test_vectors test_engine test_q31 test_scene test_step test_critical test_fit"
 [ "$mode" = full ] && SUITES=test_config
 
 NOPROF="-DMDR_CFG_PROFILE_CONE=0 -DMDR_CFG_PROFILE_POWERLAW=0 -DMDR_CFG_PROFILE_FLATPUNCH=0 -DMDR_CFG_PROFILE_SPHERE=0 -DMDR_CFG_PROFILE_FLATTIP=0 -DMDR_CFG_PROFILE_WAVY=0 -DMDR_CFG_PROFILE_TABLE=0"
@@ -64,6 +64,8 @@ configs() {
         echo "-DMDR_CFG_ENGINE=0"
         echo "-DMDR_CFG_PROFILE_TABLE=0 -DMDR_CFG_F32=0"
         echo "-DMDR_CFG_F32=0 -DMDR_CFG_F64=0"
+        echo "-DMDR_CFG_FIT=0"
+        echo "-DMDR_CFG_FIT=0 -DMDR_CFG_F64=0 -DMDR_CFG_STRESS=0"
     fi
 }
 

@@ -5,16 +5,7 @@
 # Values are checked against the closed forms (JKR, CHECK_VALUES) to 1e-6.
 set -u
 MDR=${1:-build/host/mdr}
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-near() { # near VALUE WANT RELTOL
-    awk -v x="$1" -v y="$2" -v t="$3" 'BEGIN { d = x - y; if (d < 0) d = -d; s = y < 0 ? -y : y; exit !(d <= t * s) }'
-}
-key() { # key JSON NAME -> value
-    printf '%s' "$1" | tr -d '{}' | tr ',' '\n' | awk -F': ' -v k="\"$2\"" '$1 ~ k { gsub(/ /, "", $2); print $2 }'
-}
+. "$(dirname "$0")/cli_lib.sh"
 P="--profile paraboloid --R 10e-6 --E 1e6 --w 0.05"
 
 out=$($MDR eq $P --a 2.6e-6) || bad "eq exit"

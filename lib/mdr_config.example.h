@@ -16,6 +16,7 @@
 /* evaluation paths */
 /* #define MDR_CFG_ENGINE 0 */  /* spring tables and engines */
 /* #define MDR_CFG_SCENE 0 */   /* table-free scenes */
+/* #define MDR_CFG_FIT 0 */     /* fitting measured force curves (mdr_fit.h) */
 
 /* output groups */
 /* #define MDR_CFG_STRESS 0 */  /* stress functions */

@@ -2,9 +2,9 @@
  * port/link_check.c: a freestanding program that calls the public functions
  * of one arithmetic, linked with -nostdlib -lgcc to prove lib/ needs nothing
  * else; `make cross` / `make size` link it once per core and arithmetic:
- *   MDR_LC_F32     closed forms, critical states, spring tables and the f32
- *                  engine (every profile; add MDR_LC_STRESS for the stress
- *                  functions)
+ *   MDR_LC_F32     closed forms, critical states, the fit, spring tables and
+ *                  the f32 engine (every profile; add MDR_LC_STRESS for the
+ *                  stress functions)
  *   MDR_LC_Q31     a q31 engine on a table made from a profile: table
  *                  conversion, float init and the integer steps
  *   MDR_LC_SCENE   the minimal scene (paraboloid, f32, force only,
@@ -145,6 +145,23 @@ static void lc_profiles(void)
             (void)mdr_critical_f32(&c, MDR_CONTROL_LOAD, 1.0f, a0, &o);
             mdr_link_sink = e.F + o.F + g + dg + G;
         }
+#if MDR_CFG_FIT
+        {
+            /* the fit: a curve, the forward model, the Tabor parameter */
+            static float zc[16], Fc[16], wk[MDR_FIT_WORK_LEN(16)];
+            mdr_fit_opts_f32 fo;
+            mdr_fit_result_f32 fr;
+            float mu = 0.0f;
+            mdr_fit_defaults_f32(&fo, mdr_link_in[3]);
+            if (mdr_fit_curve_f32(&c, &fo, zc, Fc, 16, wk, MDR_FIT_WORK_LEN(16), &fr) == MDR_OK) {
+                mdr_link_sink = fr.E;
+            }
+            (void)mdr_fit_model_f32(&c, 1.0f, 0.0f, 0.0f, MDR_FIT_RETRACT, zc, 16, Fc);
+            (void)mdr_tabor_f32(&c, 3e-10f, 1e-8f, &mu, NULL, NULL);
+            (void)mdr_contact_material_f32(&c, 1e9f, 0.1f);
+            mdr_link_sink = mu + Fc[0] + (float)mdr_regime_str(MDR_REGIME_JKR)[0];
+        }
+#endif
 #ifdef MDR_LC_STRESS
         {
             float k = 0.0f, s = 0.0f;

@@ -10,6 +10,7 @@
 #include "mdr_engine.h"
 #include "mdr_scene.h"
 #include "mdr_q31.h"
+#include "mdr_fit.h"
 
 #define MDR_VERSION_MAJOR 0
 #define MDR_VERSION_MINOR 1

@@ -121,6 +121,19 @@ mdr_status MDR_SFX(mdr_contact_init_table)(MDR_SFX(mdr_contact) *c, const MDR_T 
                                            const MDR_T *s, uint16_t m, MDR_T E, MDR_T w);
 
 /**
+ * @brief Give an initialised contact another material: same profile, new E*
+ *        and w (the derived constants that depend on them are updated). The
+ *        fit (mdr_fit.h) varies E* and w of a tip this way, whatever its kind.
+ * @param[in,out] c  from mdr_contact_init_<type>() or
+ *                  mdr_contact_init_table_<type>(); untouched unless MDR_OK
+ * @param[in]     E  effective modulus E* > 0 [Pa]
+ * @param[in]     w  work of adhesion w >= 0 [J/m^2]
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (also when
+ *         sqrt(2 pi w/E*) is beyond the arithmetic's range)
+ */
+mdr_status MDR_SFX(mdr_contact_material)(MDR_SFX(mdr_contact) *c, MDR_T E, MDR_T w);
+
+/**
  * @brief Equivalent 1D profile at x: g(x), g'(x) and G(x) = int_0^x g.
  * @param[in]  x   0 < x, and x < R (sphere), x <= a0 (flat punch),
  *                 x/lambda < 2^46 (wavy, f32; 2^104 in f64: beyond, the

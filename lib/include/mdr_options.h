@@ -30,6 +30,8 @@
  * Evaluation paths
  *   MDR_CFG_ENGINE   spring tables and the spring engine (mdr_engine_t.h)
  *   MDR_CFG_SCENE    table-free scenes (mdr_scene_t.h)
+ *   MDR_CFG_FIT      fitting measured force curves (mdr_fit.h): E*, w,
+ *                    contact point and baseline, two-point method, regime
  * Output groups
  *   MDR_CFG_STRESS   stress: mdr_stress(), mdr_stress_at(),
  *                    mdr_stress_intensity() and their quadrature table
@@ -72,6 +74,9 @@
 #endif
 #ifndef MDR_CFG_SCENE
 #define MDR_CFG_SCENE 1
+#endif
+#ifndef MDR_CFG_FIT
+#define MDR_CFG_FIT 1
 #endif
 #ifndef MDR_CFG_STRESS
 #define MDR_CFG_STRESS 1

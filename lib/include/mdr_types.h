@@ -63,6 +63,25 @@ typedef int8_t mdr_status;
 /** The profile, output group or feature asked for was removed from this
  *  build by a compile-time option (mdr_options.h). */
 #define MDR_E_DISABLED (-14)
+/** Fit (mdr_fit.h): too few points in the curve's retract, or in contact. */
+#define MDR_E_FEW (-15)
+/** Fit: the base position z is not monotonic within the retract (or within
+ *  the approach when it is fitted). */
+#define MDR_E_ORDER (-16)
+/** Fit: no contact in the curve (no retract force above the baseline by
+ *  more than the noise). */
+#define MDR_E_NOCONTACT (-17)
+/** Fit: the curve never separates (no pull-off jump back to the baseline
+ *  followed by free points), or shows no adhesion. */
+#define MDR_E_NOPULLOFF (-18)
+/** Fit: Levenberg-Marquardt reached its iteration cap (MDR_FIT_ITER_MAX). */
+#define MDR_E_FITCAP (-19)
+/** Fit: the data do not determine the parameters (singular normal
+ *  equations, or the two-point equations have no solution). */
+#define MDR_E_DEGENERATE (-20)
+/** Fit: the model's retract jumps to a smaller stable contact before the
+ *  pull-off (wavy profiles): the one-branch model does not apply. */
+#define MDR_E_JUMPS (-21)
 
 /** Profile kinds (uint8_t values; the meaning of p[0..2] for each). */
 #define MDR_PROFILE_PARABOLOID 1u /**< f = r^2/(2R);          p = {R}            */

@@ -1,6 +1,7 @@
 /* mdr_status.c: names of the status codes (shared by every arithmetic). */
 #include "mdr_types.h"
 #include "mdr_engine.h"
+#include "mdr_fit.h"
 
 const char *mdr_status_str(mdr_status s)
 {
@@ -20,6 +21,13 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_TABLE: return "tabulated profile unusable (order, count or g(0))";
     case MDR_E_SIZE: return "number of springs out of range";
     case MDR_E_DISABLED: return "removed from this build (mdr_options.h)";
+    case MDR_E_FEW: return "too few points in the retract or in contact";
+    case MDR_E_ORDER: return "z not monotonic within the retract (or approach)";
+    case MDR_E_NOCONTACT: return "no contact in the curve";
+    case MDR_E_NOPULLOFF: return "the curve never separates (no pull-off jump to the baseline)";
+    case MDR_E_FITCAP: return "fit iteration cap reached";
+    case MDR_E_DEGENERATE: return "the data do not determine the parameters";
+    case MDR_E_JUMPS: return "the retract jumps before the pull-off (one-branch model does not apply)";
     default: return "unknown status";
     }
 }
@@ -37,3 +45,15 @@ const char *mdr_event_str(uint8_t event)
     default: return "unknown event";
     }
 }
+
+#if MDR_CFG_FIT
+const char *mdr_regime_str(uint8_t regime)
+{
+    switch (regime) {
+    case MDR_REGIME_JKR: return "JKR";
+    case MDR_REGIME_TRANSITION: return "transition";
+    case MDR_REGIME_DMT: return "DMT";
+    default: return "none";
+    }
+}
+#endif

@@ -1,0 +1,977 @@
+/*
+ * mdr_fit_cli.h: `mdr fit`, measured force curves to E*, w, contact point,
+ * baseline and regime (lib/include/mdr_fit.h). Included once by mdr_cli.c,
+ * after its profile table and argument helpers; mdr_cli.c's main() hands
+ * argv to fit_main() when the command is "fit".
+ *
+ *   mdr fit --curve curve.csv <profile> --k-machine K [--method full|two-point]
+ *           [--z-e ZE] [--arith f32|f64] [--E0 E --w0 W] [--approach]
+ *   mdr fit --map map.csv <profile> --k-machine K [--jobs J] [same options]
+ *
+ *   <profile>  --profile paraboloid --R R | cone --theta RAD | powerlaw --C C
+ *              --n N | sphere --R R | flattip --R R --b B | wavy --R R --h H
+ *              --lambda L (the flat punch cannot be fitted: mdr_fit_t.h)
+ *   curve.csv  a header line, then z,F rows in time order (z the base
+ *              position [m], increasing toward the sample; F the force [N],
+ *              compressive positive); the retract is the part from the
+ *              largest z on. Lines starting with '#' and empty lines are
+ *              skipped.
+ *   map.csv    a header line, then curve,z,F rows, each curve's rows
+ *              contiguous and in time order (curve: any label without a
+ *              comma).
+ *   --arith    f64 (default) or f32
+ *   --method   full (default: Levenberg-Marquardt) or two-point
+ *   --z-e      equilibrium distance of the Tabor parameter [m], 0.3e-9
+ *   --E0 --w0  first guesses (default: the two-point method)
+ *   --approach also fit w_adv to the approach part (JSON w_adv, w_adv_err)
+ *   --jobs     threads for a map (default: every core)
+ *   --model F  (with --curve) also write the fitted model: CSV z,F,F_model,
+ *              branch (approach with w_adv, or w without --approach;
+ *              retract), for plots and residuals
+ *
+ * --curve prints one JSON object: E w z0 F_base E_err w_err z0_err
+ * F_base_err mu R_mu z_e regime rms pull_off_F pull_off_z a_pull_off n
+ * method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
+ * A fit that fails prints {"status": ..., "message": ...} and exits 1.
+ * --map prints CSV curve,E,w,z0,F_base,mu,rms,status, one row per curve in
+ * the input's order (status "ok" or the library's status name; the other
+ * fields empty when the fit failed), a progress bar on stderr when stderr
+ * is a terminal; exit 0 when every curve was fitted, 1 when some failed.
+ * Bad arguments or a bad file: exit 2, one line on stderr (file:line: why).
+ */
+#include <limits.h>
+#include <pthread.h>
+#include <time.h>
+#include <unistd.h>
+
+struct fit_args {
+    const char *file, *model;
+    int map, f64, approach, jobs;
+    uint8_t kind, method;
+    double p[3], k_m, z_e, E0, w0;
+};
+
+/* one result in double, whatever the arithmetic */
+typedef struct {
+    mdr_status st;
+    double E, w, z0, F_base, E_err, w_err, z0_err, F_base_err, rms, pull_off_F, pull_off_z, a_pull_off;
+    double mu, R_mu, w_adv, w_adv_err;
+    uint32_t n, n_approach;
+    uint16_t iterations;
+    uint8_t regime, method;
+} fit_res;
+
+/* a thread's buffer for one curve in an arithmetic: z, F and the workspace */
+typedef struct {
+    void *buf;
+    size_t bytes;
+} fit_scratch;
+
+static int fit_scratch_grow(fit_scratch *s, size_t n, size_t elem)
+{
+    size_t need = (2 * n + MDR_FIT_WORK_LEN(n)) * elem;
+    if (need > s->bytes) {
+        void *b = realloc(s->buf, need);
+        if (b == NULL) {
+            return 1;
+        }
+        s->buf = b;
+        s->bytes = need;
+    }
+    return 0;
+}
+
+#define FIT_T float
+#define FIT_SFX(name) name##_f32
+#include "mdr_fit_cli_t.h"
+#undef FIT_T
+#undef FIT_SFX
+#define FIT_T double
+#define FIT_SFX(name) name##_f64
+#include "mdr_fit_cli_t.h"
+#undef FIT_T
+#undef FIT_SFX
+
+static mdr_status fit_one(const struct fit_args *A, const double *z, const double *F, size_t n, fit_scratch *s,
+                          fit_res *o)
+{
+    memset(o, 0, sizeof *o);
+    if (n > UINT32_MAX / 2) {
+        o->st = MDR_E_SIZE;
+        return o->st;
+    }
+    if (A->f64) {
+        o->st = fit_run_f64(A, z, F, n, s, o);
+    } else {
+        o->st = fit_run_f32(A, z, F, n, s, o);
+    }
+    return o->st;
+}
+
+/* The library's status as its C name (for JSON and CSV). */
+static const char *fit_status_name(mdr_status st)
+{
+    switch (st) {
+    case MDR_OK: return "ok";
+    case MDR_E_NULL: return "MDR_E_NULL";
+    case MDR_E_NONFINITE: return "MDR_E_NONFINITE";
+    case MDR_E_PARAM: return "MDR_E_PARAM";
+    case MDR_E_KIND: return "MDR_E_KIND";
+    case MDR_E_RADIUS: return "MDR_E_RADIUS";
+    case MDR_E_POSITION: return "MDR_E_POSITION";
+    case MDR_E_CONTROL: return "MDR_E_CONTROL";
+    case MDR_E_NOCONV: return "MDR_E_NOCONV";
+    case MDR_E_SINGULAR: return "MDR_E_SINGULAR";
+    case MDR_E_OVERFLOW: return "MDR_E_OVERFLOW";
+    case MDR_E_OUTSIDE: return "MDR_E_OUTSIDE";
+    case MDR_E_TABLE: return "MDR_E_TABLE";
+    case MDR_E_SIZE: return "MDR_E_SIZE";
+    case MDR_E_DISABLED: return "MDR_E_DISABLED";
+    case MDR_E_FEW: return "MDR_E_FEW";
+    case MDR_E_ORDER: return "MDR_E_ORDER";
+    case MDR_E_NOCONTACT: return "MDR_E_NOCONTACT";
+    case MDR_E_NOPULLOFF: return "MDR_E_NOPULLOFF";
+    case MDR_E_FITCAP: return "MDR_E_FITCAP";
+    case MDR_E_DEGENERATE: return "MDR_E_DEGENERATE";
+    case MDR_E_JUMPS: return "MDR_E_JUMPS";
+    default: return "MDR_E_OTHER";
+    }
+}
+
+/* ---- reading CSV with line numbers ------------------------------------ */
+
+typedef struct {
+    FILE *fp;
+    const char *name;
+    char *buf;
+    size_t cap;
+    long line;
+} fit_reader;
+
+/* the next line (newline removed) in r->buf: its length, or -1 at the end
+ * of the file, on a read error (ferror tells) or out of memory */
+static long fit_getline(fit_reader *r)
+{
+    size_t len = 0;
+    for (;;) {
+        if (r->cap - len < 2) {
+            size_t nc = r->cap ? 2 * r->cap : 4096;
+            char *b = realloc(r->buf, nc);
+            if (b == NULL) {
+                return -1;
+            }
+            r->buf = b;
+            r->cap = nc;
+        }
+        if (fgets(r->buf + len, (int)(r->cap - len > INT_MAX ? INT_MAX : r->cap - len), r->fp) == NULL) {
+            if (len == 0) {
+                return -1;
+            }
+            break;
+        }
+        len += strlen(r->buf + len);
+        if (len > 0 && r->buf[len - 1] == '\n') {
+            len--;
+            break;
+        }
+    }
+    if (len > 0 && r->buf[len - 1] == '\r') {
+        len--;
+    }
+    r->buf[len] = '\0';
+    r->line++;
+    return (long)len;
+}
+
+static int fit_bad_line(const fit_reader *r, const char *why)
+{
+    fprintf(stderr, "mdr: %s:%ld: %s\n", r->name, r->line, why);
+    return 2;
+}
+
+/* a blank line or a comment */
+static int fit_skip(const char *s)
+{
+    while (*s == ' ' || *s == '\t') {
+        s++;
+    }
+    return *s == '\0' || *s == '#';
+}
+
+/* one number field [s, e) */
+static int fit_num(const char *s, const char *e, double *v)
+{
+    char *end;
+    while (s < e && (*s == ' ' || *s == '\t')) {
+        s++;
+    }
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t')) {
+        e--;
+    }
+    if (s == e) {
+        return 0;
+    }
+    *v = strtod(s, &end);
+    return end == e;
+}
+
+/* Split the line at commas into at most 3 fields: their count; starts and
+ * ends in f[][2]. */
+static int fit_fields(char *s, char *f[3][2])
+{
+    int n = 0;
+    for (;;) {
+        char *c = strchr(s, ',');
+        if (n == 3) {
+            return 4;
+        }
+        f[n][0] = s;
+        f[n][1] = c != NULL ? c : s + strlen(s);
+        n++;
+        if (c == NULL) {
+            return n;
+        }
+        s = c + 1;
+    }
+}
+
+/* the z,F of a data line (fields k0, k0 + 1); 0 ok, else 2 after the message */
+static int fit_row(const fit_reader *r, char *f[3][2], int k0, double *z, double *F)
+{
+    if (!fit_num(f[k0][0], f[k0][1], z) || !fit_num(f[k0 + 1][0], f[k0 + 1][1], F)) {
+        return fit_bad_line(r, "not a number");
+    }
+    if (*z != *z || *F != *F || *z - *z != 0.0 || *F - *F != 0.0) {
+        return fit_bad_line(r, "not a finite number (NaN or inf)");
+    }
+    return 0;
+}
+
+/* a curve's samples and the file line of each */
+typedef struct {
+    double *z, *F;
+    long *line;
+    size_t n, cap;
+    char *label;
+    fit_res res;
+} fit_curve;
+
+static int fit_push(fit_curve *c, double z, double F, long line)
+{
+    if (c->n == c->cap) {
+        size_t nc = c->cap ? 2 * c->cap : 1024;
+        double *zz = realloc(c->z, nc * sizeof *zz);
+        double *ff;
+        long *ll;
+        if (zz == NULL) {
+            return 1;
+        }
+        c->z = zz;
+        ff = realloc(c->F, nc * sizeof *ff);
+        if (ff == NULL) {
+            return 1;
+        }
+        c->F = ff;
+        ll = realloc(c->line, nc * sizeof *ll);
+        if (ll == NULL) {
+            return 1;
+        }
+        c->line = ll;
+        c->cap = nc;
+    }
+    c->z[c->n] = z;
+    c->F[c->n] = F;
+    c->line[c->n] = line;
+    c->n++;
+    return 0;
+}
+
+static void fit_curve_free(fit_curve *c)
+{
+    free(c->z);
+    free(c->F);
+    free(c->line);
+    free(c->label);
+    memset(c, 0, sizeof *c);
+}
+
+/* The first line of the retract whose z increases (a bad file), or 0. */
+static long fit_order_line(const fit_curve *c)
+{
+    size_t i, top = 0;
+    for (i = 0; i < c->n; i++) {
+        top = c->z[i] >= c->z[top] ? i : top;
+    }
+    for (i = top + 1; i < c->n; i++) {
+        if (c->z[i] > c->z[i - 1]) {
+            return c->line[i];
+        }
+    }
+    return 0;
+}
+
+/* ---- one curve ------------------------------------------------------------ */
+
+/* --model: the data with the fitted model (f64) beside them */
+static int fit_write_model(const struct fit_args *A, const fit_curve *c)
+{
+    mdr_contact_f64 tip;
+    double *Fm = malloc(c->n * sizeof *Fm);
+    size_t i, top = 0;
+    mdr_status st = fit_tip_f64(A, &tip);
+    FILE *fp;
+    if (Fm == NULL) {
+        return usage_error("out of memory", NULL);
+    }
+    for (i = 0; i < c->n; i++) {
+        top = c->z[i] >= c->z[top] ? i : top;
+    }
+    if (st == MDR_OK) {
+        st = mdr_contact_material_f64(&tip, c->res.E, A->approach ? c->res.w_adv : c->res.w);
+    }
+    if (st == MDR_OK && top > 0) {
+        st = mdr_fit_model_f64(&tip, A->k_m, c->res.z0, c->res.F_base, MDR_FIT_APPROACH, c->z, (uint32_t)top, Fm);
+    }
+    if (st == MDR_OK) {
+        st = mdr_contact_material_f64(&tip, c->res.E, c->res.w);
+    }
+    if (st == MDR_OK) {
+        st = mdr_fit_model_f64(&tip, A->k_m, c->res.z0, c->res.F_base, MDR_FIT_RETRACT, c->z + top,
+                               (uint32_t)(c->n - top), Fm + top);
+    }
+    if (st != MDR_OK) {
+        free(Fm);
+        (void)cli_fail("--model", st);
+        return 1;
+    }
+    fp = fopen(A->model, "w");
+    if (fp == NULL) {
+        free(Fm);
+        return usage_error("cannot write", A->model);
+    }
+    fprintf(fp, "z,F,F_model,branch\n");
+    for (i = 0; i < c->n; i++) {
+        fprintf(fp, "%.17g,%.17g,%.17g,%s\n", c->z[i], c->F[i], Fm[i], i < top ? "approach" : "retract");
+    }
+    free(Fm);
+    if (ferror(fp) || fclose(fp) != 0) {
+        perror("mdr: --model");
+        return 1;
+    }
+    return 0;
+}
+
+static void fit_json_num(const char *key, double v, int f64, int *first)
+{
+    printf("%s\"%s\": ", *first ? "" : ", ", key);
+    printf(f64 ? "%.17g" : "%.9g", v);
+    *first = 0;
+}
+
+static int fit_curve_cmd(const struct fit_args *A)
+{
+    fit_reader r = {NULL, NULL, NULL, 0, 0};
+    fit_curve c;
+    fit_scratch s = {NULL, 0};
+    int rc = 0, header = 0, first = 1;
+    long bad;
+    memset(&c, 0, sizeof c);
+    r.name = A->file;
+    r.fp = fopen(A->file, "rb");
+    if (r.fp == NULL) {
+        return usage_error("cannot open", A->file);
+    }
+    while (rc == 0 && fit_getline(&r) >= 0) {
+        char *f[3][2];
+        double z, F;
+        if (fit_skip(r.buf)) {
+            continue;
+        }
+        if (fit_fields(r.buf, f) != 2) {
+            rc = fit_bad_line(&r, "expected two fields z,F");
+        } else if (!header && !fit_num(f[0][0], f[0][1], &z)) {
+            header = 1; /* the header line */
+        } else {
+            header = 1;
+            rc = fit_row(&r, f, 0, &z, &F);
+            if (rc == 0 && fit_push(&c, z, F, r.line) != 0) {
+                rc = fit_bad_line(&r, "out of memory");
+            }
+        }
+    }
+    if (rc == 0 && ferror(r.fp)) {
+        rc = usage_error("read error in", A->file);
+    }
+    (void)fclose(r.fp); /* read only */
+    free(r.buf);
+    if (rc == 0 && c.n == 0) {
+        rc = usage_error("no z,F rows in", A->file);
+    }
+    if (rc == 0 && (bad = fit_order_line(&c)) != 0) {
+        fprintf(stderr, "mdr: %s:%ld: z increases within the retract (the part after the largest z)\n",
+                A->file, bad);
+        rc = 2;
+    }
+    if (rc != 0) {
+        fit_curve_free(&c);
+        return rc;
+    }
+    (void)fit_one(A, c.z, c.F, c.n, &s, &c.res);
+    free(s.buf);
+    printf("{");
+    if (c.res.st != MDR_OK) {
+        printf("\"status\": \"%s\", \"message\": \"%s\", \"status_code\": %d, \"method\": \"%s\", \"arith\": \"%s\"}\n",
+               fit_status_name(c.res.st), mdr_status_str(c.res.st), (int)c.res.st,
+               A->method == MDR_FIT_FULL ? "full" : "two-point", A->f64 ? "f64" : "f32");
+        fit_curve_free(&c);
+        return 1;
+    }
+    fit_json_num("E", c.res.E, A->f64, &first);
+    fit_json_num("w", c.res.w, A->f64, &first);
+    fit_json_num("z0", c.res.z0, A->f64, &first);
+    fit_json_num("F_base", c.res.F_base, A->f64, &first);
+    fit_json_num("E_err", c.res.E_err, A->f64, &first);
+    fit_json_num("w_err", c.res.w_err, A->f64, &first);
+    fit_json_num("z0_err", c.res.z0_err, A->f64, &first);
+    fit_json_num("F_base_err", c.res.F_base_err, A->f64, &first);
+    fit_json_num("mu", c.res.mu, A->f64, &first);
+    fit_json_num("R_mu", c.res.R_mu, A->f64, &first);
+    fit_json_num("z_e", A->z_e, A->f64, &first);
+    printf(", \"regime\": \"%s\"", mdr_regime_str(c.res.regime));
+    fit_json_num("rms", c.res.rms, A->f64, &first);
+    fit_json_num("pull_off_F", c.res.pull_off_F, A->f64, &first);
+    fit_json_num("pull_off_z", c.res.pull_off_z, A->f64, &first);
+    fit_json_num("a_pull_off", c.res.a_pull_off, A->f64, &first);
+    if (A->approach) {
+        fit_json_num("w_adv", c.res.w_adv, A->f64, &first);
+        fit_json_num("w_adv_err", c.res.w_adv_err, A->f64, &first);
+        printf(", \"n_approach\": %lu", (unsigned long)c.res.n_approach);
+    }
+    printf(", \"n\": %lu, \"method\": \"%s\", \"iterations\": %u, \"arith\": \"%s\", \"status\": \"ok\"}\n",
+           (unsigned long)c.res.n, c.res.method == MDR_FIT_FULL ? "full" : "two-point",
+           (unsigned)c.res.iterations, A->f64 ? "f64" : "f32");
+    rc = A->model != NULL ? fit_write_model(A, &c) : 0;
+    fit_curve_free(&c);
+    return rc;
+}
+
+/* ---- a map: curves on threads, in the input's order -------------------- */
+
+/* A pool of worker threads fitting the curves of one chunk (a batch of
+ * curves read from the file) while the main thread reads the next. */
+typedef struct {
+    pthread_mutex_t mu;
+    pthread_cond_t go, done;
+    fit_curve *jobs;
+    size_t njobs, next, finished;
+    int quit;
+    const struct fit_args *A;
+} fit_pool;
+
+static void *fit_worker(void *arg)
+{
+    fit_pool *P = arg;
+    fit_scratch s = {NULL, 0};
+    (void)pthread_mutex_lock(&P->mu);
+    for (;;) {
+        size_t i;
+        while (!P->quit && P->next >= P->njobs) {
+            (void)pthread_cond_wait(&P->go, &P->mu);
+        }
+        if (P->quit) {
+            break;
+        }
+        i = P->next++;
+        (void)pthread_mutex_unlock(&P->mu);
+        (void)fit_one(P->A, P->jobs[i].z, P->jobs[i].F, P->jobs[i].n, &s, &P->jobs[i].res);
+        (void)pthread_mutex_lock(&P->mu);
+        if (++P->finished == P->njobs) {
+            (void)pthread_cond_signal(&P->done);
+        }
+    }
+    (void)pthread_mutex_unlock(&P->mu);
+    free(s.buf);
+    return NULL;
+}
+
+static void fit_pool_submit(fit_pool *P, fit_curve *jobs, size_t n)
+{
+    (void)pthread_mutex_lock(&P->mu);
+    P->jobs = jobs;
+    P->njobs = n;
+    P->next = 0;
+    P->finished = 0;
+    (void)pthread_cond_broadcast(&P->go);
+    (void)pthread_mutex_unlock(&P->mu);
+}
+
+static void fit_pool_wait(fit_pool *P)
+{
+    (void)pthread_mutex_lock(&P->mu);
+    while (P->finished < P->njobs) {
+        (void)pthread_cond_wait(&P->done, &P->mu);
+    }
+    (void)pthread_mutex_unlock(&P->mu);
+}
+
+/* The labels of the curves seen so far (open addressing on a string hash),
+ * to refuse a curve whose rows are not contiguous. */
+typedef struct {
+    char **slot;
+    size_t cap, n;
+} fit_seen;
+
+static size_t fit_hash(const char *s)
+{
+    size_t h = 1469598103u;
+    while (*s) {
+        h = (h ^ (unsigned char)*s++) * 16777619u;
+    }
+    return h;
+}
+
+/* 1 if label was already there, 0 if added, -1 out of memory */
+static int fit_seen_add(fit_seen *t, const char *label)
+{
+    size_t i;
+    if (2 * (t->n + 1) > t->cap) {
+        size_t nc = t->cap ? 2 * t->cap : 1024, k;
+        char **ns = calloc(nc, sizeof *ns);
+        if (ns == NULL) {
+            return -1;
+        }
+        for (k = 0; k < t->cap; k++) {
+            if (t->slot[k] != NULL) {
+                for (i = fit_hash(t->slot[k]) & (nc - 1); ns[i] != NULL; i = (i + 1) & (nc - 1)) {
+                }
+                ns[i] = t->slot[k];
+            }
+        }
+        free(t->slot);
+        t->slot = ns;
+        t->cap = nc;
+    }
+    for (i = fit_hash(label) & (t->cap - 1); t->slot[i] != NULL; i = (i + 1) & (t->cap - 1)) {
+        if (strcmp(t->slot[i], label) == 0) {
+            return 1;
+        }
+    }
+    {
+        size_t len = strlen(label) + 1;
+        t->slot[i] = malloc(len);
+        if (t->slot[i] == NULL) {
+            return -1;
+        }
+        memcpy(t->slot[i], label, len);
+    }
+    t->n++;
+    return 0;
+}
+
+static void fit_seen_free(fit_seen *t)
+{
+    size_t i;
+    for (i = 0; i < t->cap; i++) {
+        free(t->slot[i]);
+    }
+    free(t->slot);
+}
+
+/* the label field, trimmed, into a new string */
+static char *fit_label(const char *s, const char *e)
+{
+    char *l;
+    while (s < e && (*s == ' ' || *s == '\t')) {
+        s++;
+    }
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t')) {
+        e--;
+    }
+    l = malloc((size_t)(e - s) + 1);
+    if (l != NULL) {
+        memcpy(l, s, (size_t)(e - s));
+        l[e - s] = '\0';
+    }
+    return l;
+}
+
+/* the label field [s, e), trimmed, equals label */
+static int fit_same_label(const char *label, const char *s, const char *e)
+{
+    size_t n;
+    while (s < e && (*s == ' ' || *s == '\t')) {
+        s++;
+    }
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t')) {
+        e--;
+    }
+    n = e > s ? (size_t)(e - s) : 0u;
+    return strlen(label) == n && memcmp(label, s, n) == 0;
+}
+
+/* the first row of the next curve, read at the end of a chunk */
+typedef struct {
+    int have, header;
+    char *label;
+    double z, F;
+    long line;
+} fit_pending;
+
+/* Read up to max curves into ch[] (reusing their buffers; the pending row
+ * of the previous call first). Returns the number read, or -2 on a bad
+ * file (the message printed). */
+static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_curve *ch, size_t max)
+{
+    size_t k = 0, i;
+    int active = 0;
+    for (i = 0; i < max; i++) {
+        ch[i].n = 0;
+    }
+    if (pd->have) {
+        free(ch[0].label);
+        ch[0].label = pd->label;
+        pd->label = NULL;
+        pd->have = 0;
+        if (fit_push(&ch[0], pd->z, pd->F, pd->line) != 0) {
+            (void)fit_bad_line(r, "out of memory");
+            return -2;
+        }
+        active = 1;
+    }
+    for (;;) {
+        char *f[3][2], *label;
+        double z, F;
+        int sn;
+        if (fit_getline(r) < 0) {
+            return (long)(k + (size_t)active);
+        }
+        if (fit_skip(r->buf)) {
+            continue;
+        }
+        if (fit_fields(r->buf, f) != 3) {
+            (void)fit_bad_line(r, "expected three fields curve,z,F");
+            return -2;
+        }
+        if (!pd->header && !fit_num(f[1][0], f[1][1], &z)) {
+            pd->header = 1; /* the header line */
+            continue;
+        }
+        pd->header = 1;
+        if (fit_row(r, f, 1, &z, &F) != 0) {
+            return -2;
+        }
+        if (active && fit_same_label(ch[k].label, f[0][0], f[0][1])) {
+            if (fit_push(&ch[k], z, F, r->line) != 0) {
+                (void)fit_bad_line(r, "out of memory");
+                return -2;
+            }
+            continue;
+        }
+        label = fit_label(f[0][0], f[0][1]);
+        if (label == NULL) {
+            (void)fit_bad_line(r, "out of memory");
+            return -2;
+        }
+        /* a new curve */
+        sn = fit_seen_add(seen, label);
+        if (sn != 0) {
+            char msg[200];
+            (void)snprintf(msg, sizeof msg, "curve %.80s%s", label,
+                           sn > 0 ? " appears again: the rows of a curve must be contiguous" : ": out of memory");
+            free(label);
+            (void)fit_bad_line(r, msg);
+            return -2;
+        }
+        if (active) {
+            k++;
+            if (k == max) {
+                pd->have = 1;
+                pd->label = label;
+                pd->z = z;
+                pd->F = F;
+                pd->line = r->line;
+                return (long)k;
+            }
+        }
+        free(ch[k].label);
+        ch[k].label = label;
+        active = 1;
+        if (fit_push(&ch[k], z, F, r->line) != 0) {
+            (void)fit_bad_line(r, "out of memory");
+            return -2;
+        }
+    }
+}
+
+static void fit_map_row(const fit_curve *c, int f64)
+{
+    const char *fmt = f64 ? "%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,ok\n" : "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,ok\n";
+    if (c->res.st == MDR_OK) {
+        printf(fmt, c->label, c->res.E, c->res.w, c->res.z0, c->res.F_base, c->res.mu, c->res.rms);
+    } else {
+        printf("%s,,,,,,,%s\n", c->label, fit_status_name(c->res.st));
+    }
+}
+
+/* seconds on a monotonic clock */
+static double fit_now(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0) {
+        return 0.0;
+    }
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void fit_progress(long done_bytes, long total, unsigned long curves, double t0)
+{
+    char bar[41];
+    double f = total > 0 ? (double)done_bytes / (double)total : 0.0;
+    double dt = fit_now() - t0;
+    int i, k = (int)(f * 40.0);
+    for (i = 0; i < 40; i++) {
+        bar[i] = i < k ? '=' : ' ';
+    }
+    bar[40] = '\0';
+    fprintf(stderr, "\rmdr fit: [%s] %3d%%  %lu curves  %.0f curves/s ", bar, (int)(f * 100.0), curves,
+            dt > 0 ? (double)curves / dt : 0.0);
+}
+
+static int fit_map_cmd(const struct fit_args *A)
+{
+    fit_reader r = {NULL, NULL, NULL, 0, 0};
+    fit_seen seen = {NULL, 0, 0};
+    fit_pending pd = {0, 0, NULL, 0.0, 0.0, 0};
+    fit_pool P;
+    pthread_t *th;
+    fit_curve *buf[2];
+    size_t chunk = (size_t)32 * (size_t)A->jobs, i;
+    long n[2], total = 0;
+    int cur = 0, rc = 0, tty = isatty(STDERR_FILENO), nth = 0, failed = 0;
+    unsigned long curves = 0;
+    double t0 = fit_now();
+    r.name = A->file;
+    r.fp = fopen(A->file, "rb");
+    if (r.fp == NULL) {
+        return usage_error("cannot open", A->file);
+    }
+    if (tty && fseek(r.fp, 0, SEEK_END) == 0) {
+        total = ftell(r.fp);
+        if (fseek(r.fp, 0, SEEK_SET) != 0) {
+            (void)fclose(r.fp);
+            return usage_error("cannot seek in", A->file);
+        }
+    }
+    buf[0] = calloc(chunk, sizeof *buf[0]);
+    buf[1] = calloc(chunk, sizeof *buf[1]);
+    th = calloc((size_t)A->jobs, sizeof *th);
+    if (buf[0] == NULL || buf[1] == NULL || th == NULL) {
+        free(buf[0]);
+        free(buf[1]);
+        free(th);
+        (void)fclose(r.fp);
+        return usage_error("out of memory", NULL);
+    }
+    memset(&P, 0, sizeof P);
+    (void)pthread_mutex_init(&P.mu, NULL);
+    (void)pthread_cond_init(&P.go, NULL);
+    (void)pthread_cond_init(&P.done, NULL);
+    P.A = A;
+    for (nth = 0; nth < A->jobs; nth++) {
+        if (pthread_create(&th[nth], NULL, fit_worker, &P) != 0) {
+            break;
+        }
+    }
+    if (nth == 0) {
+        rc = usage_error("cannot start a thread", NULL);
+    }
+    printf("curve,E,w,z0,F_base,mu,rms,status\n");
+    n[0] = rc == 0 ? fit_read_chunk(&r, &seen, &pd, buf[0], chunk) : 0;
+    rc = n[0] < 0 ? 2 : rc;
+    while (rc == 0 && n[cur] > 0) {
+        fit_pool_submit(&P, buf[cur], (size_t)n[cur]);
+        /* read the next chunk while the workers fit this one */
+        n[1 - cur] = fit_read_chunk(&r, &seen, &pd, buf[1 - cur], chunk);
+        fit_pool_wait(&P);
+        for (i = 0; i < (size_t)n[cur]; i++) {
+            fit_map_row(&buf[cur][i], A->f64);
+            failed += buf[cur][i].res.st != MDR_OK;
+        }
+        curves += (unsigned long)n[cur];
+        if (tty) {
+            fit_progress(ftell(r.fp), total, curves, t0);
+        }
+        if (n[1 - cur] < 0) {
+            rc = 2;
+        }
+        cur = 1 - cur;
+    }
+    if (rc == 0 && ferror(r.fp)) {
+        rc = usage_error("read error in", A->file);
+    }
+    if (tty) {
+        fputc('\n', stderr);
+    }
+    (void)pthread_mutex_lock(&P.mu);
+    P.quit = 1;
+    (void)pthread_cond_broadcast(&P.go);
+    (void)pthread_mutex_unlock(&P.mu);
+    for (i = 0; i < (size_t)nth; i++) {
+        (void)pthread_join(th[i], NULL);
+    }
+    for (i = 0; i < chunk; i++) {
+        fit_curve_free(&buf[0][i]);
+        fit_curve_free(&buf[1][i]);
+    }
+    free(buf[0]);
+    free(buf[1]);
+    free(th);
+    free(pd.label);
+    free(r.buf);
+    fit_seen_free(&seen);
+    (void)fclose(r.fp); /* read only */
+    (void)pthread_mutex_destroy(&P.mu);
+    (void)pthread_cond_destroy(&P.go);
+    (void)pthread_cond_destroy(&P.done);
+    if (rc == 0 && curves == 0) {
+        rc = usage_error("no curve,z,F rows in", A->file);
+    }
+    return rc != 0 ? rc : failed > 0;
+}
+
+/* ---- arguments ----------------------------------------------------------- */
+
+static int fit_main(int argc, char **argv)
+{
+    struct fit_args A;
+    const char *profile = NULL, *pname[3];
+    double pval[3];
+    int i, k, np = 0, have_k = 0, have_E0 = 0, have_w0 = 0, pi = -1, used[3] = {0, 0, 0};
+    long ncpu;
+    memset(&A, 0, sizeof A);
+    A.f64 = 1;
+    A.method = MDR_FIT_FULL;
+    A.z_e = MDR_FIT_Z_E_DEFAULT;
+    ncpu = sysconf(_SC_NPROCESSORS_ONLN);
+    A.jobs = ncpu > 0 && ncpu < 1024 ? (int)ncpu : 1;
+    for (i = 2; i < argc; i++) {
+        const char *f = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        double x = 0.0;
+        if (strcmp(f, "--approach") == 0) {
+            A.approach = 1;
+            continue;
+        }
+        if (strncmp(f, "--", 2) != 0) {
+            return usage_error("expected a flag", f);
+        }
+        if (v == NULL) {
+            return usage_error("flag needs a value", f);
+        }
+        i++;
+        if (strcmp(f, "--curve") == 0 || strcmp(f, "--map") == 0) {
+            if (A.file != NULL) {
+                return usage_error("give one of --curve FILE or --map FILE", NULL);
+            }
+            A.file = v;
+            A.map = f[2] == 'm';
+        } else if (strcmp(f, "--profile") == 0) {
+            profile = v;
+        } else if (strcmp(f, "--model") == 0) {
+            A.model = v;
+        } else if (strcmp(f, "--arith") == 0) {
+            if (strcmp(v, "f32") != 0 && strcmp(v, "f64") != 0) {
+                return usage_error("--arith takes f32 or f64", v);
+            }
+            A.f64 = strcmp(v, "f64") == 0;
+        } else if (strcmp(f, "--method") == 0) {
+            if (strcmp(v, "full") == 0) {
+                A.method = MDR_FIT_FULL;
+            } else if (strcmp(v, "two-point") == 0) {
+                A.method = MDR_FIT_TWO_POINT;
+            } else {
+                return usage_error("--method takes full or two-point", v);
+            }
+        } else if (!parse_num(v, &x)) {
+            return usage_error("not a number", f);
+        } else if (strcmp(f, "--k-machine") == 0) {
+            A.k_m = x;
+            have_k = 1;
+        } else if (strcmp(f, "--z-e") == 0) {
+            A.z_e = x;
+        } else if (strcmp(f, "--E0") == 0) {
+            A.E0 = x;
+            have_E0 = 1;
+        } else if (strcmp(f, "--w0") == 0) {
+            A.w0 = x;
+            have_w0 = 1;
+        } else if (strcmp(f, "--jobs") == 0) {
+            long j;
+            if (!parse_count(x, 1, 1024, &j)) {
+                return usage_error("--jobs must be an integer in [1, 1024]", v);
+            }
+            A.jobs = (int)j;
+        } else if (np < 3) {
+            pname[np] = f; /* a profile parameter, checked below */
+            pval[np++] = x;
+        } else {
+            return usage_error("unknown or misplaced flag", f);
+        }
+    }
+    if (A.file == NULL) {
+        return usage_error("fit needs --curve FILE or --map FILE", NULL);
+    }
+    if (A.map && A.model != NULL) {
+        return usage_error("--model goes with --curve", NULL);
+    }
+    if (profile == NULL) {
+        return usage_error("missing --profile", NULL);
+    }
+    if (strcmp(profile, "table") == 0) {
+        return usage_error("--profile table: not yet in mdr fit", NULL);
+    }
+    for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
+        if (strcmp(profiles[k].name, profile) == 0) {
+            pi = k;
+        }
+    }
+    if (pi < 0) {
+        return usage_error("unknown profile", profile);
+    }
+    if (profiles[pi].kind == MDR_PROFILE_FLATPUNCH) {
+        return usage_error("the flat punch cannot be fitted (pinned at its rim until it ruptures)", NULL);
+    }
+    A.kind = profiles[pi].kind;
+    {
+        const char *missing = profile_params(pi, pname, pval, np, used, A.p);
+        if (missing != NULL) {
+            return usage_error("missing profile parameter", missing);
+        }
+    }
+    for (k = 0; k < np; k++) {
+        if (!used[k]) {
+            return usage_error("unknown or misplaced flag", pname[k]);
+        }
+    }
+    if (!have_k || !(A.k_m > 0.0) || A.k_m - A.k_m != 0.0) {
+        return usage_error("fit needs --k-machine K > 0 (N/m)", NULL);
+    }
+    if (!(A.z_e > 0.0) || A.z_e - A.z_e != 0.0) {
+        return usage_error("--z-e must be > 0 (m)", NULL);
+    }
+    if (have_E0 != have_w0 || (have_E0 && !(A.E0 > 0.0 && A.w0 > 0.0))) {
+        return usage_error("--E0 and --w0 go together, both > 0", NULL);
+    }
+    {
+        mdr_contact_f64 t64;
+        mdr_contact_f32 t32;
+        mdr_status st = fit_tip_f64(&A, &t64);
+        if (st == MDR_OK && !A.f64) {
+            st = fit_tip_f32(&A, &t32);
+        }
+        if (st != MDR_OK) {
+            (void)cli_fail("profile", st);
+            return 2;
+        }
+    }
+    return A.map ? fit_map_cmd(&A) : fit_curve_cmd(&A);
+}

@@ -1,0 +1,695 @@
+/*
+ * test_fit.c: the fit module (lib/include/mdr_fit.h) on curves made by the
+ * library's own forward model and by the JKR closed forms through a
+ * cantilever written here with libm (jkr_* below, independent of lib/), with
+ * noise, offsets in z and F, coarse and fine sampling, the three regimes,
+ * f32 and f64; every bad input.
+ *
+ * On the emulated Cortex-M4F (make target-test, f64 in soft double) the
+ * curves are shorter (the profiles coarse only, without the wavy one) and
+ * the Monte Carlo has NMC = 6 copies; the tolerances are the same or
+ * derived from NMC.
+ *
+ * Tolerances (relative unless said):
+ *   TOL_MODEL = 1e-11: the library's forward model against the closed form,
+ *     whole retract curves, relative to max|F| (both in double). Near the
+ *     fold F - F_fold ~ sqrt(z' - z_fold): a rounding of z' by eps |z'|
+ *     moves F there by up to ~sqrt(eps) of F (1e-9 at a sample 1e-9 a_fold
+ *     above the fold); on these uniform samples measured worst 1.3e-12;
+ *   TOL_RT = 5e-8: noise-free round trip (f64) of E*, w, F_b (relative to
+ *     |F_po|) and z0 (relative to the z range of the contact), on curves of
+ *     the forward model and of the closed form, every profile, coarse (40
+ *     points) and fine (800 to 3000) sampling. The issue asks for 1e-6;
+ *     measured worst 3e-8 (the LM stops at a step of sqrt(eps) in the
+ *     scaled parameters, and where a sample lies on the fold itself u
+ *     converges linearly); 1.5e-10 on the closed-form curves;
+ *   TOL_RT32 = 5e-5: the same in f32, measured worst 2.7e-5 (the data
+ *     rounded to float: z carries ~1e-7 of itself, and E* follows from
+ *     d = z - F/k_m, up to 40x smaller than z through a soft lever);
+ *   noise: Monte Carlo over NMC noisy copies (Gaussian, sigma = 1 % of the
+ *     pull-off force) of one closed-form curve per regime: the bias of the
+ *     mean estimate within 4 standard errors of the mean (4 s/sqrt(NMC),
+ *     s the larger of the copies' scatter sd and the mean reported error),
+ *     the scatter sd within a factor RATIO of the mean standard error the
+ *     fit reports, RATIO = 1 + 4/sqrt(2 (NMC - 1)): 4 standard deviations
+ *     of a sample sd over NMC copies (1.45 for the host's 40; measured worst
+ *     1.30; not checked on the target's 6, too few for a sample sd), and
+ *     every single estimate within 5 reported standard errors of the truth (the reported errors
+ *     carry the fold's position within the sampling step: mdr_fit_curve);
+ *   TOL_TP = 1e-9: the two-point method when the zero-force point and the
+ *     fold are samples (it is then exact for the model; measured 1e-12);
+ *     TOL_TP_GRID = 0.5: two-point on 300 uniform samples, a first guess:
+ *     it takes the last contact sample for the fold, whose force differs
+ *     from the fold's by O(sqrt(step)) (measured worst 0.21 in E*);
+ *   TOL_MU = 1e-13: the Tabor parameter against its formula.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "mdr.h"
+#include "applies.h"
+
+#if !(MDR_CFG_HAS_FIT && MDR_CFG_F32 && MDR_CFG_F64 && MDR_CFG_ALL_PROFILES)
+MDR_TEST_NOT_APPLICABLE("the fit, f32, f64 and every profile")
+#else
+#include "test_util.h"
+#include "noise.h"
+
+#define TOL_MODEL 1e-11
+#define TOL_RT 5e-8
+#define TOL_RT32 5e-5
+#define TOL_TP 1e-9
+#define TOL_TP_GRID 0.5
+#define TOL_MU 1e-13
+#ifdef MDR_TARGET_TEST
+#define NMC 6 /* soft double on the M4F: fewer copies and points (the bounds scale with them) */
+#define NFINE 600
+#define NPROF 200
+#define NPROF_SIZES 1 /* the coarse curves only */
+#define NNOISE 300
+#define NTP 500
+#define NAPP 150
+#else
+#define NMC 40
+#define NFINE 3000
+#define NPROF 800
+#define NPROF_SIZES 2
+#define NNOISE 1000
+#define NTP 2000
+#define NAPP 300
+#endif
+#define NMAX 4000
+#define RATIO (1.0 + 4.0 / sqrt(2.0 * (NMC - 1)))
+
+/* ---- JKR paraboloid through a cantilever, libm only --------------------- */
+
+typedef struct {
+    double R, E, w, km;
+} jkr_par;
+
+/* d, F and dz/da (z = d + F/km) at contact radius a (JKR 1971; seed
+ * 4.30-4.35): d = a^2/R - sqrt(2 pi a w/E*), F = 4E* a^3/(3R) - sqrt(8 pi w E* a^3) */
+static double jkr_z(const jkr_par *p, double a, double *F, double *dz)
+{
+    double d = a * a / p->R - sqrt(2 * M_PI * a * p->w / p->E);
+    double f = 4 * p->E * a * a * a / (3 * p->R) - sqrt(8 * M_PI * p->w * p->E * a * a * a);
+    double dd = 2 * a / p->R - 0.5 * sqrt(2 * M_PI * p->w / (p->E * a));
+    double df = 4 * p->E * a * a / p->R - 1.5 * sqrt(8 * M_PI * p->w * p->E * a);
+    if (F) {
+        *F = f;
+    }
+    if (dz) {
+        *dz = dd + df / p->km;
+    }
+    return d + f / p->km;
+}
+
+/* fold radius (dz/da = 0) by bisection */
+static double jkr_fold(const jkr_par *p)
+{
+    double lo = 1e-15, hi = p->R, dz;
+    int i;
+    for (i = 0; i < 400; i++) {
+        double mid = 0.5 * (lo + hi);
+        jkr_z(p, mid, NULL, &dz);
+        if (dz > 0) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return hi;
+}
+
+/* radius on the stable branch with z(a) = zp (bisection above the fold) */
+static double jkr_a(const jkr_par *p, double zp, double af)
+{
+    double lo = af, hi = 2 * af;
+    int i;
+    while (jkr_z(p, hi, NULL, NULL) < zp) {
+        hi *= 2;
+    }
+    for (i = 0; i < 400; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (jkr_z(p, mid, NULL, NULL) > zp) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* zero-force radius: 4E* a^3/(3R) = sqrt(8 pi w E* a^3) */
+static double jkr_a0(const jkr_par *p)
+{
+    return pow(3 * p->R / (4 * p->E) * sqrt(8 * M_PI * p->w * p->E), 2.0 / 3.0);
+}
+
+static int cmp_desc(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? 1 : x > y ? -1 : 0;
+}
+
+/* A retract of n points, z' from 2|z'_fold| + z'(2.5 a_fold) down to
+ * 0.4 of that range below the fold (free there), base offset z0, baseline
+ * Fb. exact: the zero-force point and the fold are two of the samples (the
+ * others uniform). Returns the index of the last contact point; *Fpo the
+ * fold's force. */
+static int jkr_curve(const jkr_par *p, double z0, double Fb, int n, double *z, double *F, int exact,
+                     double *Fpo)
+{
+    double af = jkr_fold(p), Ff, zf = jkr_z(p, af, &Ff, NULL), ztop, zbot;
+    int i, m = exact ? n - 2 : n, last = -1;
+    ztop = 2.0 * fabs(zf) + jkr_z(p, 2.5 * af, NULL, NULL);
+    zbot = zf - 0.4 * (ztop - zf);
+    for (i = 0; i < m; i++) {
+        z[i] = ztop + (zbot - ztop) * i / (m - 1);
+    }
+    if (exact) {
+        z[m] = zf;
+        z[m + 1] = jkr_z(p, jkr_a0(p), NULL, NULL);
+        qsort(z, (size_t)n, sizeof *z, cmp_desc);
+    }
+    for (i = 0; i < n; i++) {
+        double zp = z[i], f = 0.0;
+        if (zp == zf) {
+            f = Ff;
+            last = i;
+        } else if (zp > zf) {
+            jkr_z(p, jkr_a(p, zp, af), &f, NULL);
+            last = i;
+        }
+        z[i] = zp + z0;
+        F[i] = f + Fb;
+    }
+    if (Fpo) {
+        *Fpo = Ff;
+    }
+    return last;
+}
+
+
+static double work64[2 * NMAX];
+static float work32[2 * NMAX];
+static double zs[NMAX], Fs[NMAX], Fm[NMAX];
+static float zs32[NMAX], Fs32[NMAX];
+
+/* the regimes: mu = 450 (JKR: a soft gel on a 1 um sphere), 1.2
+ * (transition: 20 nm tip on a polymer), 0.016 (DMT: 10 nm tip on a hard
+ * solid); k_m comparable to the contact's stiffness */
+static const jkr_par regimes[3] = {
+    {1e-6, 1e6, 0.05, 1.0},
+    {20e-9, 1e9, 0.05, 0.2},
+    {10e-9, 100e9, 0.01, 40.0},
+};
+static const uint8_t regime_of[3] = {MDR_REGIME_JKR, MDR_REGIME_TRANSITION, MDR_REGIME_DMT};
+
+static mdr_contact_f64 paraboloid64(double R)
+{
+    mdr_contact_f64 c;
+    double p[3] = {R, 0, 0};
+    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, p, 1.0, 0.0), MDR_OK);
+    return c;
+}
+
+/* worst errors met, printed at the end of each test */
+static double worst;
+static void track(double got, double want, double scale, double tol, const char *what)
+{
+    double s = scale > 0 ? scale : fabs(want), e = fabs(got - want) / s;
+    worst = e > worst ? e : worst;
+    rel_le(got, want, scale, tol, what);
+}
+
+static void check_fit64(const mdr_fit_result_f64 *r, double E, double w, double z0, double Fb, double zscale,
+                        double Fscale, double tol, const char *what)
+{
+    char msg[160];
+    snprintf(msg, sizeof msg, "%s: E", what);
+    track(r->E, E, 0, tol, msg);
+    snprintf(msg, sizeof msg, "%s: w", what);
+    track(r->w, w, 0, tol, msg);
+    snprintf(msg, sizeof msg, "%s: z0", what);
+    track(r->z0, z0, zscale, tol, msg);
+    snprintf(msg, sizeof msg, "%s: F_b", what);
+    track(r->F_base, Fb, Fscale, tol, msg);
+}
+
+/* ---- the forward model against the closed form -------------------------- */
+
+static void test_model_vs_closed_form(void **state)
+{
+    int k;
+    (void)state;
+    worst = 0;
+    for (k = 0; k < 3; k++) {
+        const jkr_par *p = &regimes[k];
+        mdr_contact_f64 c;
+        double pp[3] = {p->R, 0, 0}, Fpo, fmax = 0;
+        int i, n = 500;
+        jkr_curve(p, 1e-6, 2e-10, n, zs, Fs, 0, &Fpo);
+        assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, pp, p->E, p->w), MDR_OK);
+        assert_int_equal(mdr_fit_model_f64(&c, p->km, 1e-6, 2e-10, MDR_FIT_RETRACT, zs, (uint32_t)n, Fm), MDR_OK);
+        for (i = 0; i < n; i++) {
+            fmax = fabs(Fs[i]) > fmax ? fabs(Fs[i]) : fmax;
+        }
+        for (i = 0; i < n; i++) {
+            track(Fm[i], Fs[i], fmax, TOL_MODEL, "model vs JKR closed form");
+        }
+    }
+    print_message("model vs closed form: worst %.2g of max|F|\n", worst);
+}
+
+/* ---- noise-free round trips ---------------------------------------------- */
+
+static void test_roundtrip_closed_form(void **state)
+{
+    static const int sizes[2] = {40, NFINE};
+    int k, s;
+    (void)state;
+    worst = 0;
+    for (k = 0; k < 3; k++) {
+        for (s = 0; s < 2; s++) {
+            const jkr_par *p = &regimes[k];
+            mdr_contact_f64 c = paraboloid64(p->R);
+            mdr_fit_opts_f64 o;
+            mdr_fit_result_f64 r;
+            double Fpo, z0 = 3.2e-6, Fb = -0.7 * fabs(p->w * p->R);
+            int n = sizes[s], last = jkr_curve(p, z0, Fb, n, zs, Fs, 0, &Fpo);
+            mdr_fit_defaults_f64(&o, p->km);
+            assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r), MDR_OK);
+            check_fit64(&r, p->E, p->w, z0, Fb, zs[0] - zs[last], fabs(Fpo), TOL_RT, "closed form round trip");
+            assert_int_equal(r.n, n);
+            assert_int_equal(r.method, MDR_FIT_FULL);
+            assert_true(r.iterations > 0 && r.iterations <= MDR_FIT_ITER_MAX);
+            assert_true(r.rms < 1e-6 * fabs(Fpo));
+            assert_int_equal(r.regime, regime_of[k]);
+        }
+    }
+    print_message("closed-form round trip (f64): worst %.2g\n", worst);
+}
+
+/* every profile the fit takes, through the library's own forward model;
+ * curves from 2.5 x the fold's radius to below the fold; machine stiffness
+ * of the order of the contact's (a lever much softer than the contact
+ * leaves E* undetermined: z' ~ F/k_m); 40 (coarse) and 800 points */
+static void test_roundtrip_profiles(void **state)
+{
+    static const struct {
+        uint8_t kind;
+        double p[3], E, w, km;
+    } cases[] = {
+        {MDR_PROFILE_PARABOLOID, {50e-9, 0, 0}, 2e9, 0.1, 5.0},
+        {MDR_PROFILE_SPHERE, {20e-9, 0, 0}, 5e8, 0.2, 2.0},
+        {MDR_PROFILE_CONE, {0.2, 0, 0}, 1e9, 0.05, 2.0},
+        {MDR_PROFILE_POWERLAW, {1e12, 3.0, 0}, 1e9, 0.05, 50.0},
+        {MDR_PROFILE_POWERLAW, {1e3, 1.5, 0}, 1e9, 0.05, 5.0},
+        {MDR_PROFILE_FLATTIP, {30e-9, 3e-9, 0}, 1e9, 0.05, 2.0},
+#ifndef MDR_TARGET_TEST /* Struve functions at every point: 100x the others, minutes in soft double */
+        {MDR_PROFILE_WAVY, {30e-9, 0.02e-9, 10e-9}, 1e9, 0.05, 2.0},
+#endif
+    };
+    size_t k;
+    (void)state;
+    worst = 0;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        mdr_contact_f64 c, tip;
+        mdr_critstate_f64 cs;
+        mdr_eqstate_f64 e;
+        mdr_fit_opts_f64 o;
+        mdr_fit_result_f64 r;
+        double as, ztop, zf, zbot, z0 = -1.5e-6, Fb = 0.3e-9;
+        int i, n = NPROF, s;
+        assert_int_equal(mdr_contact_init_f64(&c, cases[k].kind, cases[k].p, cases[k].E, cases[k].w), MDR_OK);
+        assert_int_equal(mdr_contact_init_f64(&tip, cases[k].kind, cases[k].p, 1.0, 0.0), MDR_OK);
+        assert_int_equal(mdr_default_start_f64(&c, &as), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, cases[k].km, as, &cs), MDR_OK);
+        assert_int_equal(mdr_eq_f64(&c, 2.5 * cs.a, &e), MDR_OK);
+        zf = cs.d + cs.F / cases[k].km;
+        ztop = e.d + e.F / cases[k].km;
+        zbot = zf - 0.3 * (ztop - zf);
+        for (s = 0; s < NPROF_SIZES; s++) {
+            int nn = s ? n : 40;
+            for (i = 0; i < nn; i++) {
+                zs[i] = z0 + ztop + (zbot - ztop) * i / (nn - 1);
+            }
+            assert_int_equal(mdr_fit_model_f64(&c, cases[k].km, z0, Fb, MDR_FIT_RETRACT, zs, (uint32_t)nn, Fs), MDR_OK);
+            mdr_fit_defaults_f64(&o, cases[k].km);
+            assert_int_equal(mdr_fit_curve_f64(&tip, &o, zs, Fs, (uint32_t)nn, work64, 2 * NMAX, &r), MDR_OK);
+            check_fit64(&r, cases[k].E, cases[k].w, z0, Fb, ztop - zf, fabs(cs.F), TOL_RT, "profile round trip");
+            /* the model's pull-off is the contact module's fold */
+            track(r.pull_off_F, cs.F, 0, TOL_RT, "pull-off force");
+        }
+    }
+    print_message("forward-model round trip, %u profiles (f64): worst %.2g\n",
+                  (unsigned)(sizeof cases / sizeof cases[0]), worst);
+}
+
+static void test_roundtrip_f32(void **state)
+{
+    int k;
+    (void)state;
+    worst = 0;
+    for (k = 0; k < 3; k++) {
+        const jkr_par *p = &regimes[k];
+        mdr_contact_f32 c;
+        mdr_fit_opts_f32 o;
+        mdr_fit_result_f32 r;
+        float pp[3] = {(float)p->R, 0, 0};
+        double Fpo, z0 = 40e-9, Fb = 0.2 * fabs(p->w * p->R);
+        int i, n = 1000, last = jkr_curve(p, z0, Fb, n, zs, Fs, 0, &Fpo);
+        for (i = 0; i < n; i++) {
+            zs32[i] = (float)zs[i];
+            Fs32[i] = (float)Fs[i];
+        }
+        assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
+        mdr_fit_defaults_f32(&o, (float)p->km);
+        assert_int_equal(mdr_fit_curve_f32(&c, &o, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r), MDR_OK);
+        track(r.E, p->E, 0, TOL_RT32, "f32: E");
+        track(r.w, p->w, 0, TOL_RT32, "f32: w");
+        track(r.z0, z0, zs[0] - zs[last], TOL_RT32, "f32: z0");
+        track(r.F_base, Fb, fabs(Fpo), TOL_RT32, "f32: F_b");
+        assert_int_equal(r.regime, regime_of[k]);
+    }
+    print_message("closed-form round trip (f32): worst %.2g\n", worst);
+}
+
+/* ---- noise ------------------------------------------------------------------ */
+
+static void test_noise(void **state)
+{
+    int k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        const jkr_par *p = &regimes[k];
+        mdr_contact_f64 c = paraboloid64(p->R);
+        mdr_fit_opts_f64 o;
+        double Fpo, z0 = -2e-6, Fb = 1.5 * p->w * p->R, sig, est[4][NMC], rep[4] = {0, 0, 0, 0};
+        double truth[4] = {p->E, p->w, z0, Fb};
+        static const char *names[4] = {"E", "w", "z0", "F_b"};
+        int i, j, n = NNOISE;
+        jkr_curve(p, z0, Fb, n, zs, Fm, 0, &Fpo);
+        sig = 0.01 * fabs(Fpo);
+        mdr_fit_defaults_f64(&o, p->km);
+        for (j = 0; j < NMC; j++) {
+            mdr_fit_result_f64 r;
+            for (i = 0; i < n; i++) {
+                Fs[i] = Fm[i] + sig * gauss();
+            }
+            assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r), MDR_OK);
+            est[0][j] = r.E;
+            est[1][j] = r.w;
+            est[2][j] = r.z0;
+            est[3][j] = r.F_base;
+            rep[0] += r.E_err / NMC;
+            rep[1] += r.w_err / NMC;
+            rep[2] += r.z0_err / NMC;
+            rep[3] += r.F_base_err / NMC;
+            /* every estimate within 5 reported standard errors */
+            assert_true(fabs(r.E - p->E) <= 5 * r.E_err);
+            assert_true(fabs(r.w - p->w) <= 5 * r.w_err);
+            assert_true(fabs(r.z0 - z0) <= 5 * r.z0_err);
+            assert_true(fabs(r.F_base - Fb) <= 5 * r.F_base_err);
+            /* the residual is the noise */
+            assert_true(fabs(r.rms / sig - 1) < 0.15);
+            assert_int_equal(r.regime, regime_of[k]);
+        }
+        for (i = 0; i < 4; i++) {
+            double m = 0, v = 0, sd;
+            for (j = 0; j < NMC; j++) {
+                m += est[i][j] / NMC;
+            }
+            for (j = 0; j < NMC; j++) {
+                v += (est[i][j] - m) * (est[i][j] - m) / (NMC - 1);
+            }
+            sd = sqrt(v);
+            print_message("regime %d %-3s: bias %+.2f sd/sqrt(N), sd %.3g, reported %.3g (ratio %.2f)\n", k,
+                          names[i], (m - truth[i]) / (sd / sqrt(NMC)), sd, rep[i], sd / rep[i]);
+            assert_true(fabs(m - truth[i]) <= 4 * (sd > rep[i] ? sd : rep[i]) / sqrt(NMC));
+            if (NMC >= 20) {
+                assert_true(sd / rep[i] < RATIO && rep[i] / sd < RATIO);
+            }
+        }
+    }
+}
+
+/* ---- two-point -------------------------------------------------------------- */
+
+static void test_two_point(void **state)
+{
+    int k;
+    (void)state;
+    worst = 0;
+    for (k = 0; k < 3; k++) {
+        const jkr_par *p = &regimes[k];
+        mdr_contact_f64 c = paraboloid64(p->R);
+        mdr_fit_opts_f64 o;
+        mdr_fit_result_f64 r;
+        double Fpo, z0 = 1e-7, Fb = 0.0;
+        int n = NTP, last = jkr_curve(p, z0, Fb, n, zs, Fs, 1, &Fpo);
+        mdr_fit_defaults_f64(&o, p->km);
+        o.method = MDR_FIT_TWO_POINT;
+        assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r), MDR_OK);
+        /* the zero-force point and the fold are samples: exact */
+        track(r.pull_off_F, Fpo, 0, TOL_TP, "two-point: pull-off");
+        track(r.E, p->E, 0, TOL_TP, "two-point exact: E");
+        track(r.w, p->w, 0, TOL_TP, "two-point exact: w");
+        track(r.z0, z0, zs[0] - zs[last], TOL_TP, "two-point exact: z0");
+        assert_int_equal(r.method, MDR_FIT_TWO_POINT);
+        assert_int_equal(r.iterations, 0);
+        assert_true(r.E_err > 0 && r.w_err > 0);
+        /* on an ordinary grid: a first guess within 20 % */
+        jkr_curve(p, z0, Fb, 300, zs, Fs, 0, &Fpo);
+        assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, 300u, work64, 2 * NMAX, &r), MDR_OK);
+        rel_le(r.E, p->E, 0, TOL_TP_GRID, "two-point on a grid: E");
+        rel_le(r.w, p->w, 0, TOL_TP_GRID, "two-point on a grid: w");
+    }
+    print_message("two-point, exact samples: worst %.2g\n", worst);
+}
+
+/* ---- the approach: w_adv ------------------------------------------------------ */
+
+static void test_approach(void **state)
+{
+    static const double ratios[3] = {0.3, 1.0, 0.0};
+    const jkr_par *p = &regimes[1];
+    int k;
+    (void)state;
+    worst = 0;
+    for (k = 0; k < 3; k++) {
+        mdr_contact_f64 c = paraboloid64(p->R), ca, cr;
+        mdr_fit_opts_f64 o;
+        mdr_fit_result_f64 r;
+        double pp[3] = {p->R, 0, 0}, z0 = 5e-9, Fb = 1e-11, wadv = ratios[k] * p->w, Fpo;
+        int i, na = NAPP, nr = 7 * NAPP / 3, last = jkr_curve(p, z0, Fb, nr, zs + na, Fs + na, 0, &Fpo);
+        /* approach: from the retract's lowest z up to its top */
+        for (i = 0; i < na; i++) {
+            zs[i] = zs[na + nr - 1] + (zs[na] - zs[na + nr - 1]) * i / (na - 1);
+        }
+        assert_int_equal(mdr_contact_init_f64(&ca, MDR_PROFILE_PARABOLOID, pp, p->E, wadv), MDR_OK);
+        assert_int_equal(mdr_contact_init_f64(&cr, MDR_PROFILE_PARABOLOID, pp, p->E, p->w), MDR_OK);
+        assert_int_equal(mdr_fit_model_f64(&ca, p->km, z0, Fb, MDR_FIT_APPROACH, zs, (uint32_t)na, Fs), MDR_OK);
+        mdr_fit_defaults_f64(&o, p->km);
+        o.approach = 1;
+        assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)(na + nr), work64, 2 * NMAX, &r), MDR_OK);
+        assert_int_equal(r.n, nr);
+        assert_int_equal(r.n_approach, na); /* the approach ends where the retract starts */
+        check_fit64(&r, p->E, p->w, z0, Fb, zs[na] - zs[na + last], fabs(Fpo), TOL_RT, "with approach");
+        if (wadv > 0) {
+            track(r.w_adv, wadv, 0, TOL_RT, "w_adv");
+        } else {
+            assert_true(r.w_adv <= TOL_RT * p->w); /* the bound s = 0 */
+        }
+        (void)cr;
+    }
+    print_message("approach w_adv round trip: worst %.2g\n", worst);
+}
+
+/* ---- the regime ----------------------------------------------------------------- */
+
+static void test_tabor(void **state)
+{
+    mdr_contact_f64 c;
+    double mu, R, pp[3] = {20e-9, 0, 0}, ze = 0.3e-9, E = 1e9, w;
+    uint8_t rg;
+    int k;
+    (void)state;
+    /* mu = (R w^2/(E*^2 z_e^3))^(1/3) at the thresholds and around them */
+    for (k = 0; k < 6; k++) {
+        double mu_want = (k < 3 ? 5.0 : 0.1) * (k % 3 == 0 ? 0.999 : k % 3 == 1 ? 1.0 : 1.001);
+        w = sqrt(pow(mu_want, 3) * E * E * ze * ze * ze / pp[0]);
+        assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, pp, E, w), MDR_OK);
+        assert_int_equal(mdr_tabor_f64(&c, ze, 1e-9, &mu, &R, &rg), MDR_OK);
+        rel_le(mu, cbrt(pp[0] * w * w / (E * E * ze * ze * ze)), 0, TOL_MU, "mu");
+        rel_le(R, pp[0], 0, 0, "R of the paraboloid");
+        if (k % 3 != 1) { /* at the threshold itself the rounding decides */
+            assert_int_equal(rg, k == 0 ? MDR_REGIME_TRANSITION : k == 2 ? MDR_REGIME_JKR
+                                 : k == 3 ? MDR_REGIME_DMT : MDR_REGIME_TRANSITION);
+        }
+    }
+    assert_string_equal(mdr_regime_str(MDR_REGIME_JKR), "JKR");
+    assert_string_equal(mdr_regime_str(MDR_REGIME_TRANSITION), "transition");
+    assert_string_equal(mdr_regime_str(MDR_REGIME_DMT), "DMT");
+    assert_string_equal(mdr_regime_str(0), "none");
+    /* the apex radii and the equivalent radius a^2/g(a) */
+    {
+        double pw[3] = {30e-9, 1e-9, 10e-9}, pc[3] = {0.5, 0, 0}, pl[3] = {2e7, 2.0, 0}, g;
+        assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_WAVY, pw, E, 0.05), MDR_OK);
+        assert_int_equal(mdr_tabor_f64(&c, ze, 1e-9, &mu, &R, NULL), MDR_OK);
+        rel_le(R, 1 / (1 / pw[0] + 4 * M_PI * M_PI * pw[1] / (pw[2] * pw[2])), 0, 1e-15, "wavy apex R");
+        assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_POWERLAW, pl, E, 0.05), MDR_OK);
+        assert_int_equal(mdr_tabor_f64(&c, ze, 1e-9, &mu, &R, NULL), MDR_OK);
+        rel_le(R, 0.5 / pl[0], 0, 1e-15, "power law n = 2: R = 1/(2C)");
+        assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_CONE, pc, E, 0.05), MDR_OK);
+        assert_int_equal(mdr_tabor_f64(&c, ze, 3e-9, &mu, &R, NULL), MDR_OK);
+        g = M_PI / 2 * tan(pc[0]) * 3e-9; /* cone: g = (pi/2) tan(theta) x */
+        rel_le(R, 3e-9 * 3e-9 / g, 0, 1e-14, "cone: equivalent radius");
+        assert_int_equal(mdr_tabor_f64(&c, 0.0, 3e-9, &mu, &R, NULL), MDR_E_PARAM);
+        assert_int_equal(mdr_tabor_f64(&c, NAN, 3e-9, &mu, &R, NULL), MDR_E_NONFINITE);
+        assert_int_equal(mdr_tabor_f64(&c, ze, -1.0, &mu, &R, NULL), MDR_E_RADIUS);
+        assert_int_equal(mdr_tabor_f64(NULL, ze, 3e-9, &mu, &R, NULL), MDR_E_NULL);
+    }
+}
+
+/* ---- bad input: named errors, nothing written ------------------------------------ */
+
+static mdr_fit_result_f64 poisoned(void)
+{
+    mdr_fit_result_f64 r;
+    memset(&r, 0xA5, sizeof r);
+    return r;
+}
+
+static void expect_fail(const mdr_contact_f64 *c, const mdr_fit_opts_f64 *o, const double *z, const double *F,
+                        uint32_t n, size_t wl, mdr_status want, const char *what)
+{
+    mdr_fit_result_f64 r = poisoned(), p = poisoned();
+    mdr_status st = mdr_fit_curve_f64(c, o, z, F, n, work64, wl, &r);
+    if (st != want) {
+        print_error("%s: status %d (%s), want %d (%s)\n", what, st, mdr_status_str(st), want, mdr_status_str(want));
+        fail();
+    }
+    assert_memory_equal(&r, &p, sizeof r);
+}
+
+static void test_bad_input(void **state)
+{
+    const jkr_par *p = &regimes[1];
+    mdr_contact_f64 c = paraboloid64(p->R), punch;
+    mdr_fit_opts_f64 o, ob;
+    double Fpo, pp[3] = {1e-8, 0, 0}, sig;
+    int i, n = 400, last = jkr_curve(p, 0.0, 0.0, n, zs, Fs, 0, &Fpo);
+    (void)state;
+    mdr_fit_defaults_f64(&o, p->km);
+    memcpy(Fm, Fs, sizeof Fm);
+    /* arguments */
+    expect_fail(NULL, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NULL, "NULL tip");
+    expect_fail(&c, NULL, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NULL, "NULL opts");
+    expect_fail(&c, &o, NULL, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NULL, "NULL z");
+    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * (size_t)n - 1, MDR_E_SIZE, "workspace too small");
+    ob = o;
+    ob.k_m = 0;
+    expect_fail(&c, &ob, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_PARAM, "k_m = 0");
+    ob = o;
+    ob.k_m = INFINITY;
+    expect_fail(&c, &ob, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NONFINITE, "k_m = inf");
+    ob = o;
+    ob.z_e = -1;
+    expect_fail(&c, &ob, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_PARAM, "z_e < 0");
+    ob = o;
+    ob.E0 = 1e9;
+    expect_fail(&c, &ob, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_PARAM, "E0 without w0");
+    ob = o;
+    ob.method = 7;
+    expect_fail(&c, &ob, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_PARAM, "unknown method");
+    assert_int_equal(mdr_contact_init_f64(&punch, MDR_PROFILE_FLATPUNCH, pp, 1.0, 0.0), MDR_OK);
+    expect_fail(&punch, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_KIND, "flat punch");
+    /* curves */
+    expect_fail(&c, &o, zs, Fs, 5u, 2 * NMAX, MDR_E_FEW, "too few points");
+    /* three contact samples (compressive, zero-crossing, pull-off) and ten free ones */
+    {
+        double z3[13], F3[13];
+        z3[0] = zs[0];
+        F3[0] = Fs[0];
+        z3[1] = zs[last / 2];
+        F3[1] = Fs[last / 2];
+        z3[2] = zs[last];
+        F3[2] = Fs[last];
+        for (i = 0; i < 10; i++) {
+            z3[3 + i] = zs[last + 1 + i];
+            F3[3 + i] = Fs[last + 1 + i];
+        }
+        expect_fail(&c, &o, z3, F3, 13u, 2 * NMAX, MDR_E_FEW, "too few contact points");
+    }
+    Fs[n / 2] = NAN;
+    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NONFINITE, "NaN row");
+    memcpy(Fs, Fm, sizeof Fm);
+    zs[n / 3] = zs[n / 3 - 2];
+    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_ORDER, "z not monotonic in the retract");
+    last = jkr_curve(p, 0.0, 0.0, n, zs, Fs, 0, &Fpo);
+    expect_fail(&c, &o, zs, Fs, (uint32_t)last, 2 * NMAX, MDR_E_NOPULLOFF, "never separates (ends in contact)");
+    expect_fail(&c, &o, zs, Fs, (uint32_t)last + 3u, 2 * NMAX, MDR_E_NOPULLOFF, "two free points after the jump");
+    /* no contact: noise about a baseline */
+    sig = 1e-3 * fabs(Fpo);
+    for (i = 0; i < n; i++) {
+        Fs[i] = 1e-10 + sig * gauss();
+    }
+    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NOCONTACT, "no contact");
+    for (i = 0; i < n; i++) {
+        Fs[i] = 1e-12; /* no noise either: the rounding of the mean must not look like contact */
+    }
+    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NOCONTACT, "no contact, noise-free");
+    /* contact without adhesion: the force comes down to the baseline with no jump */
+    for (i = 0; i < n; i++) {
+        double zp = zs[i] - zs[n / 2];
+        Fs[i] = zp > 0 ? 1e3 * zp * sqrt(zp / 1e-9) * 1e-6 : 0.0;
+    }
+    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_NOPULLOFF, "no adhesion, no jump");
+    /* the model refuses what the fit refuses */
+    assert_int_equal(mdr_fit_model_f64(&punch, 1.0, 0.0, 0.0, MDR_FIT_RETRACT, zs, 3u, Fm), MDR_E_KIND);
+    assert_int_equal(mdr_fit_model_f64(&c, 0.0, 0.0, 0.0, MDR_FIT_RETRACT, zs, 3u, Fm), MDR_E_PARAM);
+    assert_int_equal(mdr_fit_model_f64(&c, 1.0, 0.0, 0.0, 9, zs, 3u, Fm), MDR_E_PARAM);
+    assert_int_equal(mdr_fit_model_f64(&c, 1.0, 0.0, 0.0, MDR_FIT_APPROACH, zs, 3u, Fm), MDR_E_ORDER);
+    assert_int_equal(mdr_fit_model_f64(NULL, 1.0, 0.0, 0.0, MDR_FIT_RETRACT, zs, 3u, Fm), MDR_E_NULL);
+    /* contact_material */
+    assert_int_equal(mdr_contact_material_f64(&c, -1.0, 0.1), MDR_E_PARAM);
+    assert_int_equal(mdr_contact_material_f64(&c, 1.0, NAN), MDR_E_NONFINITE);
+    assert_int_equal(mdr_contact_material_f64(NULL, 1.0, 0.1), MDR_E_NULL);
+}
+
+/* a wavy tip whose retract jumps before the pull-off: named error */
+static void test_jumps(void **state)
+{
+    mdr_contact_f64 c;
+    double pw[3] = {1e-6, 20e-9, 0.2e-6}, z[3] = {2e-6, 1e-6, 0.0}, F[3];
+    (void)state;
+    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_WAVY, pw, 1e6, 0.05), MDR_OK);
+    assert_int_equal(mdr_fit_model_f64(&c, 1.0, 0.0, 0.0, MDR_FIT_RETRACT, z, 3u, F), MDR_E_JUMPS);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_model_vs_closed_form),
+        cmocka_unit_test(test_roundtrip_closed_form),
+        cmocka_unit_test(test_roundtrip_profiles),
+        cmocka_unit_test(test_roundtrip_f32),
+        cmocka_unit_test(test_noise),
+        cmocka_unit_test(test_two_point),
+        cmocka_unit_test(test_approach),
+        cmocka_unit_test(test_tabor),
+        cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_jumps),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
+#endif

@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# test_fit_cli.sh: the `mdr fit` contract (flags, JSON keys, CSV columns,
+# exit status 0/1/2 with one stderr line naming the file line) and an
+# end-to-end round trip: curves made by the spring engine (`mdr cycle`
+# under machine control, 1024 springs: a forward model independent of the
+# fit's, which follows the contact module's equilibrium) fitted back.
+# Usage: bash host_tests/test_fit_cli.sh build/host/mdr
+# Tolerances: E*, w, w_adv, z0, F_b recovered to 1e-7 in f64 (measured
+# 7e-11: the engine's table holds the paraboloid's g exactly), 1e-3 in f32
+# (the CSV's z carries a 1 um offset: float keeps 6e-14 m of it, 6e-5 of
+# the indentation; measured 4e-5).
+set -u
+MDR=${1:-build/host/mdr}
+. "$(dirname "$0")/cli_lib.sh"
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+TIP="--profile paraboloid --R 20e-9"
+
+# curve.csv from a machine-controlled cycle of the spring engine: approach
+# from z = -10 nm to 20 nm, retract to -40 nm; base offset z0, baseline Fb
+cycle() { # cycle FILE E W K Z0 FB [label]
+    "$MDR" cycle $TIP --E "$2" --w "$3" --control machine --k-machine "$4" --path -1e-8,2e-8,-4e-8 \
+        --steps-per-segment 1000 --w-adv "$3" --arith f64 --springs 1024 2>/dev/null |
+        awk -F, -v z0="$5" -v fb="$6" -v lab="${7:-}" \
+            'NR == 1 { print (lab == "" ? "z,F" : "curve,z,F"); next }
+             { printf "%s%.17g,%.17g\n", (lab == "" ? "" : lab ","), $2 + z0, $4 + fb }' > "$1"
+}
+cycle "$TMP/c.csv" 1e9 0.05 0.2 1e-6 2e-10
+
+for arith in f64 f32; do
+    tol=1e-7
+    [ $arith = f32 ] && tol=1e-3
+    out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --arith $arith) && ok || bad "fit exit ($arith): $out"
+    for k in E w z0 F_base E_err w_err z0_err F_base_err mu regime rms pull_off_F n method iterations; do
+        [ -n "$(key "$out" $k)" ] && ok || bad "fit: key $k missing ($arith) in $out"
+    done
+    near "$(key "$out" E)" 1e9 $tol && ok || bad "engine round trip E ($arith): $out"
+    near "$(key "$out" w)" 0.05 $tol && ok || bad "engine round trip w ($arith)"
+    near "$(key "$out" z0)" 1e-6 $tol && ok || bad "engine round trip z0 ($arith)"
+    near "$(key "$out" F_base)" 2e-10 $tol && ok || bad "engine round trip F_base ($arith)"
+    [ "$(key "$out" regime)" = '"transition"' ] && ok || bad "regime ($arith): $out"
+    [ "$(key "$out" method)" = '"full"' ] && ok || bad "method key ($arith)"
+    [ "$(key "$out" n)" = 1001 ] && ok || bad "n = the retract's points ($arith)"
+done
+# mu = (R w^2/(E^2 z_e^3))^(1/3) with the default z_e = 0.3 nm, and with --z-e
+near "$(key "$out" mu)" 1.2280104994532326 1e-3 && ok || bad "mu: $out"
+out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --z-e 0.15e-9) || bad "--z-e exit"
+near "$(key "$out" mu)" 2.4560209989064652 1e-6 && ok || bad "--z-e: mu doubles when z_e halves: $out"
+out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --method two-point) || bad "two-point exit"
+[ "$(key "$out" method)" = '"two-point"' ] && [ "$(key "$out" iterations)" = 0 ] && ok || bad "two-point keys: $out"
+near "$(key "$out" E)" 1e9 0.2 && ok || bad "two-point E within 20 %: $out"
+out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --E0 2e9 --w0 0.03) || bad "--E0 --w0 exit"
+near "$(key "$out" E)" 1e9 1e-7 && ok || bad "first guesses: $out"
+out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --approach) || bad "--approach exit"
+near "$(key "$out" w_adv)" 0.05 1e-7 && ok || bad "w_adv from the approach: $out"
+[ "$(key "$out" n_approach)" = 1000 ] && ok || bad "n_approach: $out"
+
+# a fit that fails: exit 1, the JSON names the status
+head -1400 "$TMP/c.csv" > "$TMP/nosep.csv"
+out=$("$MDR" fit --curve "$TMP/nosep.csv" $TIP --k-machine 0.2)
+[ $? -eq 1 ] && ok || bad "a curve that never separates: exit 1"
+[ "$(key "$out" status)" = '"MDR_E_NOPULLOFF"' ] && ok || bad "never separates: status in $out"
+
+# a map: curves in the input's order, one row each, threads give the same
+# rows as one thread; a curve without contact fails alone (exit 1)
+cycle "$TMP/m1.csv" 1e9 0.05 0.2 0 0 a1
+cycle "$TMP/m2.csv" 2e9 0.08 0.2 3e-9 -1e-10 b2
+{ cat "$TMP/m1.csv"; tail -n +2 "$TMP/m2.csv"; } > "$TMP/map.csv"
+res=$("$MDR" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 --jobs 2) && ok || bad "map exit"
+[ "$(printf '%s\n' "$res" | head -1)" = "curve,E,w,z0,F_base,mu,rms,status" ] && ok || bad "map header"
+[ "$(printf '%s\n' "$res" | wc -l)" -eq 3 ] && ok || bad "map rows: $res"
+[ "$(printf '%s\n' "$res" | sed -n 2p | cut -d, -f1)" = a1 ] && ok || bad "map order"
+near "$(printf '%s\n' "$res" | sed -n 3p | cut -d, -f2)" 2e9 1e-7 && ok || bad "map E of b2: $res"
+near "$(printf '%s\n' "$res" | sed -n 3p | cut -d, -f3)" 0.08 1e-7 && ok || bad "map w of b2"
+[ "$(printf '%s\n' "$res" | sed -n 3p | cut -d, -f8)" = ok ] && ok || bad "map status column"
+res1=$("$MDR" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 --jobs 1)
+[ "$res" = "$res1" ] && ok || bad "--jobs 1 and --jobs 2 differ"
+awk -F, 'NR > 1002 { printf "c3,%s,1e-12\n", $2 }' "$TMP/m1.csv" > "$TMP/flat.csv"
+cat "$TMP/map.csv" "$TMP/flat.csv" > "$TMP/map2.csv"
+res=$("$MDR" fit --map "$TMP/map2.csv" $TIP --k-machine 0.2)
+[ $? -eq 1 ] && ok || bad "map with a failed curve: exit 1"
+[ "$(printf '%s\n' "$res" | tail -1)" = "c3,,,,,,,MDR_E_NOCONTACT" ] && ok || bad "failed curve row: $res"
+
+# bad arguments and bad files: exit 2, one line on stderr
+expect2() { # expect2 WHAT PATTERN ARGS...
+    local what=$1 pat=$2 err
+    shift 2
+    err=$("$MDR" "$@" 2>&1 >/dev/null)
+    if [ $? -eq 2 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && printf '%s' "$err" | grep -q -- "$pat"; then
+        ok
+    else
+        bad "$what: want exit 2 and one line matching '$pat', got: $err"
+    fi
+}
+expect2 "no --k-machine" "k-machine" fit --curve "$TMP/c.csv" $TIP
+expect2 "k_m <= 0" "k-machine" fit --curve "$TMP/c.csv" $TIP --k-machine -1
+expect2 "no file" "curve FILE" fit $TIP --k-machine 0.2
+expect2 "both files" "one of" fit --curve "$TMP/c.csv" --map "$TMP/map.csv" $TIP --k-machine 0.2
+expect2 "unknown profile" "unknown profile" fit --curve "$TMP/c.csv" --profile banana --k-machine 0.2
+expect2 "missing R" "missing profile parameter" fit --curve "$TMP/c.csv" --profile sphere --k-machine 0.2
+expect2 "flat punch" "flat punch" fit --curve "$TMP/c.csv" --profile flatpunch --a0 1e-8 --k-machine 0.2
+expect2 "bad method" "method" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --method lsq
+expect2 "bad arith" "arith" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --arith q31
+expect2 "E0 alone" "E0" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --E0 1e9
+expect2 "unknown flag" "unknown" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --foo 3
+expect2 "bad jobs" "jobs" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 --jobs 0
+expect2 "R < 0" "profile" fit --curve "$TMP/c.csv" --profile paraboloid --R -1 --k-machine 0.2
+expect2 "missing file" "cannot open" fit --curve "$TMP/none.csv" $TIP --k-machine 0.2
+printf 'z,F\n1e-8,1e-9\n0.9e-8,nan\n' > "$TMP/nan.csv"
+expect2 "NaN row" "nan.csv:3: not a finite" fit --curve "$TMP/nan.csv" $TIP --k-machine 0.2
+printf 'z,F\n1e-8,1e-9\n0.9e-8,abc\n' > "$TMP/txt.csv"
+expect2 "not a number" "txt.csv:3: not a number" fit --curve "$TMP/txt.csv" $TIP --k-machine 0.2
+printf 'z,F\n1e-8,1e-9,3\n' > "$TMP/three.csv"
+expect2 "three fields" "three.csv:2: expected two fields" fit --curve "$TMP/three.csv" $TIP --k-machine 0.2
+awk 'NR == 1300 { print "0.99e-6,0"; next } { print }' "$TMP/c.csv" > "$TMP/order.csv"
+expect2 "z not monotonic" "order.csv:1301: z increases" fit --curve "$TMP/order.csv" $TIP --k-machine 0.2
+{ cat "$TMP/map.csv"; tail -n +2 "$TMP/m1.csv" | head -3; } > "$TMP/again.csv"
+expect2 "curve not contiguous" "a1 appears again" fit --map "$TMP/again.csv" $TIP --k-machine 0.2
+printf 'curve,z,F\nx,1e-8\n' > "$TMP/map_two.csv"
+expect2 "map: two fields" "map_two.csv:2: expected three fields" fit --map "$TMP/map_two.csv" $TIP --k-machine 0.2
+
+echo "fit cli: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

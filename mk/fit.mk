@@ -1,0 +1,67 @@
+# mk/fit.mk: fitting measured force curves (lib/include/mdr_fit.h, the
+# `mdr fit` command), included at the end of the Makefile.
+#
+#   test_fit        cmocka suite (plain, ASan+UBSan, and on the emulated
+#                   Cortex-M4F: make test-target)
+#   fit-cli         host_tests/test_fit_cli.sh: the `mdr fit` contract and
+#                   an engine-to-fit round trip (in make test, via host-tests)
+#   make bench-fit  curves/s/core, forward model cost per point, callgrind
+#                   instructions per curve -> host_tests/bench/fit.md and
+#                   docs/fitting.md (between its bench-fit markers); also
+#                   run by make bench
+#   make fit-plot   the documentation's plot of a fitted curve over its data
+#                   (docs/fit_curve.png, gnuplot)
+
+TESTS += test_fit
+SAN_TESTS += test_fit
+TGT_TESTS_m4 += test_fit
+TGT_RUNS += $(B)/tgt-m4/test_fit.run
+DEB_PKGS += gnuplot-nox
+
+$(B)/host/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/host/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
+$(B)/san/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/san/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
+host-tests: $(B)/host/test_fit fit-cli
+san-tests: $(B)/san/test_fit
+
+# the CLI: `mdr fit` lives in examples/mdr_fit_cli.h (threads: -pthread,
+# for this program only)
+$(B)/host/mdr: examples/mdr_fit_cli.h examples/mdr_fit_cli_t.h
+$(B)/host/mdr: private override CFLAGS += -pthread
+
+.PHONY: fit-cli bench-fit fit-plot
+fit-cli: $(B)/host/mdr
+	@echo "== fit cli"; bash host_tests/test_fit_cli.sh $(B)/host/mdr
+
+# ---- benchmark ----------------------------------------------------------------
+$(B)/host/bench_fit: host_tests/bench_fit.c host_tests/noise.h $(B)/host/libmdr.a
+	$(HOSTCC) -std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -O2 $< $(B)/host/libmdr.a -lm -o $@
+# the map figure: curves of the bench's scene through `mdr fit --map`, one
+# thread and all cores (wall clock of the same run)
+FIT_MAP_CURVES := 512
+bench-fit: $(B)/host/bench_fit $(B)/host/mdr
+	@mkdir -p $(B)/bench/fitcg $(BENCH_OUT)
+	./$(B)/host/bench_fit time --md $(B)/bench/fit_time.md
+	@rm -f $(B)/bench/fitcg/cg.out*
+	valgrind --tool=callgrind --callgrind-out-file=$(B)/bench/fitcg/cg.out ./$(B)/host/bench_fit callgrind \
+	  2> $(B)/bench/fitcg/log || { cat $(B)/bench/fitcg/log; exit 1; }
+	@{ cat $(B)/bench/fit_time.md; echo; \
+	  echo "| callgrind (instructions, host build $(CFLAGS)) | per curve | per model point |"; \
+	  echo "| --- | ---: | ---: |"; \
+	  for f in $(B)/bench/fitcg/cg.out.*; do awk '/^desc: Trigger: Client Request: /{sub(/^desc: Trigger: Client Request: /, ""); l = $$0} \
+	    /^summary: /{ if (l ~ /^model/) printf "| %s | | %.0f |\n", l, $$2 / 32 / 2000; else printf "| %s | %.0f | |\n", l, $$2 / 32 }' $$f; done; \
+	} > $(BENCH_OUT)/fit.md
+	@bash host_tests/bench_fit_map.sh $(B)/host/mdr $(FIT_MAP_CURVES) >> $(BENCH_OUT)/fit.md
+	@cat $(BENCH_OUT)/fit.md
+	@awk 'FNR == NR { t = t $$0 "\n"; next } /<!-- bench-fit:begin/ { print; printf "%s", t; skip = 1; next } \
+	  /<!-- bench-fit:end/ { skip = 0 } !skip' $(BENCH_OUT)/fit.md docs/fitting.md > $(B)/bench/fitting.md && \
+	  cp $(B)/bench/fitting.md docs/fitting.md
+	@echo "bench-fit: $(BENCH_OUT)/fit.md written; docs/fitting.md's table updated"
+bench: bench-fit
+
+# ---- the documentation's plot -------------------------------------------------------
+fit-plot: $(B)/host/mdr
+	@mkdir -p $(B)/fitplot docs
+	bash host_tests/fit_plot.sh $(B)/host/mdr $(B)/fitplot docs/fit_curve.png
+$(B)/tgt-m4/test_fit.elf: host_tests/noise.h host_tests/test_util.h
