@@ -9,7 +9,7 @@ Mutants marked `equivalent:` (with the argument why no test can tell them
 from the original) must survive; one that is killed is a list error.
 
 The fast suites: the host cmocka suites (unit, scene, config, engine, GSL,
-vectors, critical states, engine vs ref, q31), the q31 trace against its
+vectors, critical states, fit, engine vs ref, q31), the q31 trace against its
 committed fingerprint (host_tests/q31_trace.expected), the CLI contract and
 the short stress and critical-state sweeps. A suite that runs past its time limit (a mutant that loops
 until an iteration cap, or forever) counts as killing it.
@@ -52,6 +52,7 @@ SUITES = [
     ("q31_trace", ["host_tests/q31_trace.c"], [], ["-lm"], [], 60),
     ("test_vectors", ["host_tests/test_vectors.c"], [], ["-lcmocka", "-lm"], [], 60),
     ("test_critical", ["host_tests/test_critical.c"], [], ["-lcmocka", "-lm"], [], 60),
+    ("test_fit", ["host_tests/test_fit.c"], [], ["-lcmocka", "-lm"], [], 120),
     ("cli", ["examples/mdr_cli.c"], [], ["-lm"], [], 60),
     ("test_engine_ref", ["host_tests/test_engine_ref.c"], ["ref"], ["-lcmocka"] + GSL, [], 90),
     ("test_q31", ["host_tests/test_q31.c"], ["ref"], ["-lcmocka"] + GSL, [], 120),
