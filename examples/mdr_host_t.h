@@ -108,7 +108,9 @@ static inline mdr_status HOST_SFX(mdr_host_tip_contact)(HOST_SFX(mdr_contact) *c
                                                        const double *s, uint16_t m, HOST_T E, HOST_T w,
                                                        HOST_T *buf)
 {
-    const double max = sizeof(HOST_T) == sizeof(float) ? (double)FLT_MAX : DBL_MAX;
+    /* the arithmetic's largest value (the comparison is of one type with
+     * itself in the f32 instance) */
+    const double max = sizeof(HOST_T) == sizeof(float) ? (double)FLT_MAX : DBL_MAX; /* NOLINT(misc-redundant-expression) */
     uint16_t i;
     for (i = 0; i < m; i++) {
         const double v[2] = {r[i], i + 1 < m ? s[i] : 0.0};
