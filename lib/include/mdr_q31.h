@@ -97,14 +97,22 @@ typedef struct {
  *  mdr_pinned_f32): u in the raw format of the control; d = (kd u) 2^-sd
  *  + d0 and F = (kF u) 2^-sF + F0, rounded and saturated (MDR_FLAG_SAT);
  *  the slopes dt/du of the receding and advancing branch at the edge as
- *  (s_lo 2^-ss_lo, s_hi 2^-ss_hi) raw t per raw u, 0 where there is none. */
+ *  s 2^-16 raw t per raw u, 0 where there is none. */
 typedef struct {
     int32_t u_lo, u_hi;
     int32_t kd, d0;
     int32_t kF, F0;
     int32_t s_lo, s_hi;
-    uint8_t sd, sF, ss_lo, ss_hi;
+    uint8_t sd, sF;
 } mdr_pinned_q31;
+
+/** The coefficients of one spring of a q31 table in an engine's units
+ *  (internal; a cache of the engine's spring: mdr_table_int.inc) */
+typedef struct {
+    int32_t xk, g0, G0, dg, bb;
+    int64_t dgx, bx;
+    uint16_t k;
+} mdr_spring_q31;
 
 /** The q31 engine: scene constants and state. Caller-owned; fill with
  *  mdr_engine_init_q31_f32() or _f64(), change only through the step functions. */
@@ -128,6 +136,7 @@ typedef struct {
     int32_t d;  /**< indentation, Q2.29 of D0 */
     int32_t F;  /**< force, Q2.29 of F0 */
     mdr_pinned_q31 pin; /**< the pinned edge for control mode `mode` */
+    mdr_spring_q31 sp;  /**< spring k's coefficients (k = 0xFFFF: none yet) */
     mdr_energy_q31 en;  /**< energy bookkeeping (with MDR_OUT_ENERGY), Q15.48 of W0 */
     uint16_t k; /**< spring holding the edge */
     uint8_t contact; /**< 1 in contact, 0 separated */
