@@ -249,7 +249,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         }
     }
     /* energy: Q15.48 of W0 = F0 D0 for q31 */
-    dissipated = A->q31 ? mdr_host_q31_energy(&Q, Q.e.dissipated) : (double)eng.en.dissipated;
+    dissipated = A->q31 ? mdr_host_q31_energy(&Q, Q.e.en.dissipated) : (double)eng.en.dissipated;
     if (A->q31 && (Q.e.flags & MDR_FLAG_SAT)) {
         fprintf(stderr, "mdr: q31 inputs or results saturated (beyond +-2 units: D0 = %.9g m, "
                         "F0 = %.9g N)\n", Q.D0, Q.F0);
@@ -267,7 +267,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     fprintf(stderr,
             ", \"events\": %ld, \"dissipated\": " CLI_FMT ", \"cycles\": %lu, \"jumps\": %ld"
             ", \"springs\": %u, \"a_max\": " CLI_FMT ", \"arith\": \"%s\", \"event_list\": [%s]}\n",
-            events, dissipated, (unsigned long)(A->q31 ? Q.e.cycles : eng.en.cycles), jumps,
+            events, dissipated, (unsigned long)(A->q31 ? Q.e.en.cycles : eng.en.cycles), jumps,
             (unsigned)tab.n, (double)(tab.h * (CLI_T)tab.n),
             A->q31 ? "q31" : CLI_NAME, list ? list : "");
     free(list);

@@ -91,9 +91,9 @@ int main(void)
                 mix(o.jumps);
                 steps++;
             }
-            mix(e.work);
-            mix(e.dissipated);
-            mix((int64_t)e.cycles);
+            mix(e.en.work);
+            mix(e.en.dissipated);
+            mix((int64_t)e.en.cycles);
             mix(e.flags);
         }
     }

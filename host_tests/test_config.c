@@ -12,8 +12,10 @@
  *     minimum is smooth in d, so the tick spacing (1/400 of the path's
  *     depth scale) leaves ~1e-6; f32 rounding ~1e-6; scenes and the spring
  *     engine (256 springs, a table exact for g quadratic in x) alike;
- *   TOL_MIN_Q31 = 4e-7: the same for the q31 engine (Q2.29 rounding adds
- *     ~1e-8);
+ *   TOL_MIN_Q31_LSB = 3: the q31 engine's smallest force on the same
+ *     depths against the float engine's, in LSB of its force format
+ *     (2^-29 F0, 7e-7 of this minimum: the format's rounding of F and the
+ *     state's few LSB, README "Fixed point"; measured 0.41 LSB);
  *   the force and depth of a force-only scene equal those of an
  *     all-outputs scene bit for bit;
  *   every profile kept: d and F at one radius against the closed forms of
@@ -36,7 +38,7 @@
 #include "closed_forms.h"
 
 #define TOL_MIN 5e-6
-#define TOL_MIN_Q31 4e-7
+#define TOL_MIN_Q31_LSB 3.0
 #define NTICK 4000
 #define NSPR 256
 #define AMAX 3e-6

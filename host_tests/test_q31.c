@@ -172,7 +172,7 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
         }
     }
     assert_int_equal(q.flags, 0);
-    assert_int_equal(q.cycles, 1);
+    assert_int_equal(q.en.cycles, 1);
     assert_true(checked > 20);
     assert_int_equal(po.event, MDR_EV_PULL_OFF);
     assert_int_equal(ref_critical(&sc->s, ctl, km, a_top, &rc), 0);
@@ -348,9 +348,9 @@ static void saturation(void **st)
     /* the energy sum: saturates at the int64 limit */
     small(&tq, &q, 0);
     assert_int_equal(mdr_engine_step_d_q31(&q, MDR_Q29_ONE / 8, &o), MDR_OK);
-    q.work = INT64_MAX - 5;
+    q.en.work = INT64_MAX - 5;
     assert_int_equal(mdr_engine_step_d_q31(&q, MDR_Q29_ONE / 4, &o), MDR_OK);
-    assert_true(q.work == INT64_MAX);
+    assert_true(q.en.work == INT64_MAX);
     assert_int_equal(q.flags, MDR_FLAG_SAT);
 }
 

@@ -243,9 +243,9 @@ static void eng_energy(const eng *g, double *dissipated, double *last, uint32_t 
         *dissipated = g->e32.en.dissipated, *last = g->e32.en.last_cycle, *cycles = g->e32.en.cycles;
         break;
     case K_Q31:
-        *dissipated = (double)g->eq.dissipated * g->F0 * g->D0 / 281474976710656.0;
-        *last = (double)g->eq.last_cycle * g->F0 * g->D0 / 281474976710656.0;
-        *cycles = g->eq.cycles;
+        *dissipated = (double)g->eq.en.dissipated * g->F0 * g->D0 / 281474976710656.0;
+        *last = (double)g->eq.en.last_cycle * g->F0 * g->D0 / 281474976710656.0;
+        *cycles = g->eq.en.cycles;
         break;
     case K_S64:
         *dissipated = g->en64.dissipated, *last = g->en64.last_cycle, *cycles = g->en64.cycles;

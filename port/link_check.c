@@ -200,7 +200,7 @@ static void lc_profiles(void)
                 (void)mdr_engine_step_d_q31(&eq, mdr_q31_in(&eq, MDR_Q_D, 1e-9f), &sq);
                 (void)mdr_engine_step_F_q31(&eq, 1, &sq);
                 (void)mdr_engine_step_z_q31(&eq, 1, &sq);
-                mdr_link_sink = mdr_q31_out(&eq, MDR_Q_F, sq.F) + mdr_q31_energy(&eq, eq.work) +
+                mdr_link_sink = mdr_q31_out(&eq, MDR_Q_F, sq.F) + mdr_q31_energy(&eq, eq.en.work) +
                                 (float)mdr_engine_clear_flags_q31(&eq);
             }
         }

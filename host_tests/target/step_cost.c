@@ -263,6 +263,7 @@ int main(void)
         if (mdr_engine_init_f32(&e, &t, 1e6f, 0.05f, 0.02f, 0) != MDR_OK ||
             mdr_engine_outputs_f32(&e, MDR_OUT_FORCE) != MDR_OK ||
             mdr_engine_init_q31_f32(&q, &tq, 1e6f, 0.05f, 0.02f, 0) != MDR_OK ||
+            mdr_engine_outputs_q31(&q, MDR_OUT_FORCE) != MDR_OK ||
             mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.02f, 0.0f, MDR_OUT_FORCE, NULL) !=
                 MDR_OK) {
             printf("step-cost: init failed\n");
@@ -298,6 +299,7 @@ int main(void)
         if (mdr_engine_init_f32(&e, &t, Eafm, wafm, 0.5f * wafm, km) != MDR_OK ||
             mdr_engine_outputs_f32(&e, MDR_OUT_FORCE) != MDR_OK ||
             mdr_engine_init_q31_f32(&q, &tq, Eafm, wafm, 0.5f * wafm, km) != MDR_OK ||
+            mdr_engine_outputs_q31(&q, MDR_OUT_FORCE) != MDR_OK ||
             mdr_scene_init_paraboloid_f32(&s, 20e-9f, Eafm, wafm, 0.5f * wafm, km, MDR_OUT_FORCE, NULL) !=
                 MDR_OK) {
             printf("step-cost: afm init failed\n");

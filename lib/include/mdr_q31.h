@@ -83,6 +83,37 @@ typedef struct {
     uint8_t wall;             /**< as mdr_table_f32.wall */
 } mdr_table_q31;
 
+/** The energy bookkeeping of the q31 engine (mdr_energy_f32 in fixed
+ *  point): Q15.48 of W0, saturating (MDR_FLAG_SAT) where a sum would not
+ *  fit. The work is summed per cycle (exact in integers). */
+typedef struct {
+    int64_t work;       /**< int F dd since the last complete separation */
+    int64_t dissipated; /**< energy dissipated over completed cycles */
+    int64_t last_cycle; /**< energy dissipated in the last completed cycle */
+    uint32_t cycles;    /**< completed cycles (approach, then complete separation) */
+} mdr_energy_q31;
+
+/** The pinned edge of the q31 engine for one control mode (internal; see
+ *  mdr_pinned_f32): u in the raw format of the control; d = (kd u) 2^-sd
+ *  + d0 and F = (kF u) 2^-sF + F0, rounded and saturated (MDR_FLAG_SAT);
+ *  the slopes dt/du of the receding and advancing branch at the edge as
+ *  s 2^-16 raw t per raw u, 0 where there is none. */
+typedef struct {
+    int32_t u_lo, u_hi;
+    int32_t kd, d0;
+    int32_t kF, F0;
+    int32_t s_lo, s_hi;
+    uint8_t sd, sF;
+} mdr_pinned_q31;
+
+/** The coefficients of one spring of a q31 table in an engine's units
+ *  (internal; a cache of the engine's spring: mdr_table_int.inc) */
+typedef struct {
+    int32_t xk, g0, G0, dg, bb;
+    int64_t dgx, bx;
+    uint16_t k;
+} mdr_spring_q31;
+
 /** The q31 engine: scene constants and state. Caller-owned; fill with
  *  mdr_engine_init_q31_f32() or _f64(), change only through the step functions. */
 typedef struct {
@@ -104,11 +135,15 @@ typedef struct {
     int32_t Ga; /**< G(a), Q2.29 of L*D0 */
     int32_t d;  /**< indentation, Q2.29 of D0 */
     int32_t F;  /**< force, Q2.29 of F0 */
+    mdr_pinned_q31 pin; /**< the pinned edge for control mode `mode` */
+    mdr_spring_q31 sp;  /**< spring k's coefficients (k = 0xFFFF: none yet) */
+    mdr_energy_q31 en;  /**< energy bookkeeping (with MDR_OUT_ENERGY), Q15.48 of W0 */
     uint16_t k; /**< spring holding the edge */
-    uint8_t contact, touched, flags;
-    /* energy bookkeeping, Q15.48 of W0 */
-    int64_t work, work_sep, dissipated, last_cycle;
-    uint32_t cycles;
+    uint8_t contact; /**< 1 in contact, 0 separated */
+    uint8_t touched; /**< 1 once the instance has been in contact */
+    uint8_t flags;   /**< sticky MDR_FLAG_* (MDR_FLAG_SAT: a value saturated) */
+    uint8_t outputs; /**< MDR_OUT_* (init: MDR_OUT_ALL | MDR_OUT_ENERGY) */
+    uint8_t mode;    /**< control mode of the pinned edge; 0 exactly when separated */
 } mdr_engine_q31;
 
 /** What one q31 step did (formats above; fields as mdr_step_f32). */
@@ -188,6 +223,9 @@ mdr_status mdr_engine_step_F_q31(mdr_engine_q31 *e, int32_t F, mdr_step_q31 *out
 mdr_status mdr_engine_step_z_q31(mdr_engine_q31 *e, int32_t z, mdr_step_q31 *out);
 /** @brief Clear the sticky flags; returns those that were set. */
 uint8_t mdr_engine_clear_flags_q31(mdr_engine_q31 *e);
+/** @brief Choose what the steps compute (MDR_OUT_* bits, as
+ *  mdr_engine_outputs_f32()). @return MDR_OK, MDR_E_NULL, MDR_E_PARAM */
+mdr_status mdr_engine_outputs_q31(mdr_engine_q31 *e, uint8_t outputs);
 
 #if MDR_CFG_F32
 /**

@@ -63,6 +63,13 @@
 #error "define MDR_ARITH_F32 or MDR_ARITH_F64 before including mdr_arith.h"
 #endif
 
+/* what the engines' state machine (engine/mdr_machine.inc) needs of an
+ * arithmetic: zero; finiteness (x - x is 0 unless x is inf or NaN; a sum of
+ * finite terms is finite or overflows) */
+#define MDR_ZERO MDR_K(0.0)
+#define MDR_FINITE(x) ((x) - (x) == MDR_K(0.0))
+#define MDR_FINITE4(a, b, c, d) MDR_FINITE((a) + (b) + (c) + (d))
+
 #define MDR_PI MDR_K(3.14159265358979323846264338327950288)
 #define MDR_LN2 MDR_K(0.693147180559945309417232121458176568)
 

@@ -127,9 +127,9 @@ void mdrpy_engine_info(const mdrpy_engine *x, mdrpy_info *o)
         o->a = q->e.a * (q->L / 1073741824.0);
         o->d = q->e.d * (q->D0 / 536870912.0);
         o->F = q->e.F * (q->F0 / 536870912.0);
-        o->dissipated = mdr_host_q31_energy(q, q->e.dissipated);
-        o->last_cycle = mdr_host_q31_energy(q, q->e.last_cycle);
-        o->cycles = q->e.cycles;
+        o->dissipated = mdr_host_q31_energy(q, q->e.en.dissipated);
+        o->last_cycle = mdr_host_q31_energy(q, q->e.en.last_cycle);
+        o->cycles = q->e.en.cycles;
         o->contact = q->e.contact;
         o->flags = q->e.flags;
         o->L = q->L;
