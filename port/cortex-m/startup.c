@@ -12,8 +12,9 @@
  * between the heap's start (`end`) and the stack pointer with a pattern;
  * after main the heap's top (newlib's _sbrk(0)) and the deepest
  * overwritten word above it give the heap and the stack the run used, and
- * the bytes between them that nothing ever wrote. The stack figure can
- * miss only words a frame reserved but never wrote, at its deepest end.
+ * the bytes between them that nothing ever wrote. The stack figure counts
+ * the 256 bytes below Reset's frame, which are not painted, as used, and
+ * can miss only words a frame reserved but never wrote, at its deepest end.
  */
 #include <stddef.h>
 #include <stdint.h>
