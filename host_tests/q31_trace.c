@@ -8,11 +8,26 @@
  * integer arithmetic, so any difference is a bug (undefined or
  * implementation-defined behaviour). Tables and engine constants are set up
  * in double on the host, identically for every build (IEEE, no contraction).
+ *
+ * `q31_trace --tables` prints the four q31 tables (nodes and headers) as
+ * const C (build/host/q31_trace_tables.h); a build with -DQ31_TRACE_TABLES
+ * reads them from there instead of computing them, as a firmware on a core
+ * with little RAM does (`mdr table --arith q31`): the Cortex-M0 of make
+ * target-test, whose 16 KB do not hold the 256-spring f64 and q31 tables.
+ * The hash covers the same nodes and steps, so it prints the same
+ * fingerprint; the engine is still set up on the core (the double init).
  */
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "mdr.h"
+
+#ifdef Q31_TRACE_TABLES
+#include "q31_trace_tables.h"
+#endif
+
+#define TRACE_SPRINGS 256
 
 static uint64_t h = 14695981039346656037ull;
 
@@ -25,38 +40,55 @@ static void mix(int64_t v)
     }
 }
 
-int main(void)
+static const struct {
+    uint8_t kind;
+    double p[3], E, w, L;
+} sc[] = {
+    {MDR_PROFILE_PARABOLOID, {1e-6, 0, 0}, 1e6, 0.01, 0.9e-6},
+    {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01, 0.9e-6},
+    {MDR_PROFILE_FLATPUNCH, {1e-6, 0, 0}, 1e6, 0.01, 1e-6},
+    {MDR_PROFILE_WAVY, {100e-6, 0.15e-6, 5e-6}, 1e6, 0.7957747154594767, 80e-6},
+};
+#define NSCENES (sizeof sc / sizeof sc[0])
+
+#ifndef Q31_TRACE_TABLES
+static mdr_node_q31 nq[MDR_TABLE_NODES(TRACE_SPRINGS)];
+
+/* the q31 table of scene k, made in double from the f64 one (nodes in nq) */
+static int table(unsigned k, mdr_table_q31 *tq)
 {
-    static mdr_node_f64 nf[MDR_TABLE_NODES(256)];
-    static mdr_node_q31 nq[MDR_TABLE_NODES(256)];
-    static const struct {
-        uint8_t kind;
-        double p[3], E, w, L;
-    } sc[] = {
-        {MDR_PROFILE_PARABOLOID, {1e-6, 0, 0}, 1e6, 0.01, 0.9e-6},
-        {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01, 0.9e-6},
-        {MDR_PROFILE_FLATPUNCH, {1e-6, 0, 0}, 1e6, 0.01, 1e-6},
-        {MDR_PROFILE_WAVY, {100e-6, 0.15e-6, 5e-6}, 1e6, 0.7957747154594767, 80e-6},
-    };
+    static mdr_node_f64 nf[MDR_TABLE_NODES(TRACE_SPRINGS)];
+    mdr_contact_f64 c;
+    mdr_table_f64 t;
+    return mdr_contact_init_f64(&c, sc[k].kind, sc[k].p, sc[k].E, sc[k].w) != MDR_OK ||
+           mdr_table_init_profile_f64(&t, nf, TRACE_SPRINGS, &c, sc[k].L) != MDR_OK ||
+           mdr_table_q31_from_f64(tq, nq, &t) != MDR_OK;
+}
+#endif
+
+static int trace(void)
+{
     long steps = 0, events = 0, refused = 0;
     unsigned k;
     int ctl, i;
-    for (k = 0; k < sizeof sc / sizeof sc[0]; k++) {
-        mdr_contact_f64 c;
-        mdr_table_f64 t;
+    for (k = 0; k < NSCENES; k++) {
         mdr_table_q31 tq;
-        if (mdr_contact_init_f64(&c, sc[k].kind, sc[k].p, sc[k].E, sc[k].w) != MDR_OK ||
-            mdr_table_init_profile_f64(&t, nf, 256, &c, sc[k].L) != MDR_OK ||
-            mdr_table_q31_from_f64(&tq, nq, &t) != MDR_OK) {
+        const mdr_node_q31 *n;
+#ifdef Q31_TRACE_TABLES
+        tq = q31_trace_tab[k];
+#else
+        if (table(k, &tq) != 0) {
             printf("q31 trace: setup failed\n");
             return 1;
         }
-        for (i = 0; i <= 256; i++) {
-            mix(nq[i].g);
-            mix(nq[i].G);
-            mix(nq[i].t);
-            mix(nq[i].s);
-            mix(nq[i].b);
+#endif
+        n = tq.node;
+        for (i = 0; i <= TRACE_SPRINGS; i++) {
+            mix(n[i].g);
+            mix(n[i].G);
+            mix(n[i].t);
+            mix(n[i].s);
+            mix(n[i].b);
         }
         for (ctl = 1; ctl <= 3; ctl++) {
             mdr_engine_q31 e;
@@ -101,3 +133,53 @@ int main(void)
            events, refused);
     return 0;
 }
+
+#ifdef MDR_TARGET_TEST
+int main(void)
+{
+    return trace();
+}
+#else
+/* the tables as const C, in the layout of `mdr table --arith q31` (floats
+ * as hexadecimal literals: exact) */
+static int print_tables(void)
+{
+    mdr_table_q31 tq[NSCENES];
+    unsigned k;
+    int i;
+    printf("/* q31 tables of host_tests/q31_trace.c, made by `q31_trace --tables`: do not edit */\n");
+    for (k = 0; k < NSCENES; k++) {
+        if (table(k, &tq[k]) != 0) {
+            fprintf(stderr, "q31 trace: setup failed\n");
+            return 1;
+        }
+        /* the n + 1 nodes and the block bounds after them */
+        printf("static const mdr_node_q31 q31_trace_node%u[%d] = {\n", k, (int)MDR_TABLE_NODES(TRACE_SPRINGS));
+        for (i = 0; i < (int)MDR_TABLE_NODES(TRACE_SPRINGS); i++) {
+            printf("    {%ld, %ld, %ld, %ld, %ld},\n", (long)nq[i].g, (long)nq[i].G, (long)nq[i].t,
+                   (long)nq[i].s, (long)nq[i].b);
+        }
+        printf("};\n");
+    }
+    printf("static const mdr_table_q31 q31_trace_tab[%u] = {\n", (unsigned)NSCENES);
+    for (k = 0; k < NSCENES; k++) {
+        printf("    {q31_trace_node%u, %af, %af, %af, %ld, %u, %u, %u, %u},\n", k, (double)tq[k].L,
+               (double)tq[k].L_lo, (double)tq[k].Dg, (long)tq[k].gmax, (unsigned)tq[k].n,
+               (unsigned)tq[k].m, (unsigned)tq[k].fb, (unsigned)tq[k].wall);
+    }
+    printf("};\n");
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 2 && strcmp(argv[1], "--tables") == 0) {
+        return print_tables();
+    }
+    if (argc != 1) {
+        fprintf(stderr, "usage: q31_trace [--tables]\n");
+        return 2;
+    }
+    return trace();
+}
+#endif

@@ -8,7 +8,10 @@ MDR_CM_FLAGS_m3 := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
 MDR_CM_FLAGS_m4f := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 MDR_CM_FLAGS_m7 := -mcpu=cortex-m7 -mthumb -mfloat-abi=hard -mfpu=fpv5-sp-d16
 # startup, vector table, semihosting exit; linker script of QEMU's MPS2 boards
-MDR_CM_STARTUP := port/cortex-m/startup.c port/cortex-m/semihost.c
+# (microbit.ld: the micro:bit's; both include sections.ld)
+MDR_CM_STARTUP := port/cortex-m/startup.c port/cortex-m/semihost.c port/semihost.c
 MDR_CM_LDSCRIPT := port/cortex-m/mps2.ld
-# newlib with the semihosting console (librdimon), our own startup
-MDR_CM_LDFLAGS := -T$(MDR_CM_LDSCRIPT) -nostartfiles --specs=rdimon.specs -Wl,--gc-sections
+# newlib with the semihosting console (librdimon), our own startup; the
+# board's script $(1)
+mdr_cm_ldflags = -Lport/cortex-m -T$(1) -nostartfiles --specs=rdimon.specs -Wl,--gc-sections
+MDR_CM_LDFLAGS := $(call mdr_cm_ldflags,$(MDR_CM_LDSCRIPT))

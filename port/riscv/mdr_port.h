@@ -37,7 +37,10 @@ static inline uint32_t mdr_port_cycles(void)
 #ifdef MDR_PORT_CYCLES_USER
     __asm__ volatile("rdcycle %0" : "=r"(v));
 #else
-    __asm__ volatile("csrr %0, mcycle" : "=r"(v));
+    /* csrr v, mcycle (csrrs v, 0xB00, x0) as an encoding: binutils >= 2.38
+     * with GCC >= 12's default ISA spec want Zicsr named for the mnemonic,
+     * older ones do not know the name */
+    __asm__ volatile(".insn i 0x73, 2, %0, x0, -1280" : "=r"(v));
 #endif
     return v;
 }

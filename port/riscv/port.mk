@@ -5,3 +5,12 @@
 MDR_RV_PREFIX ?= riscv64-unknown-elf-
 MDR_RV_FLAGS_rv32imac := -march=rv32imac -mabi=ilp32
 MDR_RV_FLAGS_rv32imafc := -march=rv32imafc -mabi=ilp32f
+# startup, trap handler, semihosting exit; linker script of QEMU's virt
+# board (make target-test)
+MDR_RV_STARTUP := port/riscv/startup.c port/riscv/semihost.c port/semihost.c
+MDR_RV_LDSCRIPT := port/riscv/virt.ld
+# picolibc (Debian: picolibc-riscv64-unknown-elf; the toolchain ships no C
+# library) for compiling and linking, with its semihosting console and
+# files (libsemihost); our own startup
+MDR_RV_LIBC := --specs=picolibc.specs
+MDR_RV_LDFLAGS := -T$(MDR_RV_LDSCRIPT) -nostartfiles --oslib=semihost -Wl,--gc-sections
