@@ -803,6 +803,27 @@ static void engine_errors(void **st)
     assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, -JW, 0), MDR_E_PARAM);
     assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, 0, -1.0), MDR_E_CONTROL);
     assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, 0, INFINITY), MDR_E_NONFINITE);
+    /* w / E* beyond the range (c_w = sqrt(2 pi w / E*) infinite): refused,
+     * as mdr_contact_init refuses it, in both arithmetics and for w_adv */
+    keep = e;
+    assert_int_equal(mdr_engine_init_f64(&e, &t64, 1e-300, 1e300, 0, 0), MDR_E_PARAM);
+    assert_int_equal(mdr_engine_init_f64(&e, &t64, 1e-300, 1e300, 1e300, 0), MDR_E_PARAM);
+    assert_memory_equal(&e, &keep, sizeof e);
+    {
+        static mdr_node_f32 n32w[MDR_TABLE_NODES(64)];
+        const float pf[3] = {(float)JR, 0, 0};
+        mdr_contact_f32 cf;
+        mdr_table_f32 t32;
+        mdr_engine_f32 e32, k32;
+        assert_int_equal(mdr_contact_init_f32(&cf, MDR_PROFILE_PARABOLOID, pf, (float)JE, (float)JW), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f32(&t32, n32w, 64, &cf, 3e-6f), MDR_OK);
+        memset(&e32, 0x5a, sizeof e32);
+        k32 = e32;
+        assert_int_equal(mdr_contact_init_f32(&cf, MDR_PROFILE_PARABOLOID, pf, 1e-38f, 3e38f), MDR_E_PARAM);
+        assert_int_equal(mdr_engine_init_f32(&e32, &t32, 1e-38f, 3e38f, 0, 0), MDR_E_PARAM);
+        assert_int_equal(mdr_engine_init_f32(&e32, &t32, 1e-38f, 3e38f, 3e38f, 0), MDR_E_PARAM);
+        assert_memory_equal(&e32, &k32, sizeof e32);
+    }
     bad = t64;
     bad.n = MDR_SPRINGS_MAX + 1;
     assert_int_equal(mdr_engine_init_f64(&e, &bad, JE, JW, 0, 0), MDR_E_SIZE);

@@ -281,6 +281,18 @@ static void errors(void **st)
     n128[50].q = t64.h * n128[128].g;
     assert_int_equal(mdr_table_q31_from_f64(&tq, nq128, &t64), MDR_E_OVERFLOW);
     assert_memory_equal(&tq, &tq0, sizeof tq);
+    /* a table whose depth unit Dg or length L lies beyond float's normal
+     * range (the header keeps them as float): MDR_E_OVERFLOW, not an
+     * infinite or zero Dg that the init would blame on the header */
+    {
+        static const double xm[3] = {1e30, 1e-30, 1e-39}; /* g ~ 5e65, ~5e-55; L < FLT_MIN */
+        int k;
+        for (k = 0; k < 3; k++) {
+            assert_int_equal(mdr_table_init_profile_f64(&t64, n128, 128, &c, xm[k]), MDR_OK);
+            assert_int_equal(mdr_table_q31_from_f64(&tq, nq128, &t64), MDR_E_OVERFLOW);
+            assert_memory_equal(&tq, &tq0, sizeof tq);
+        }
+    }
     /* engine init */
     small(&tq, &q, 0);
     memset(&q0, 0x5a, sizeof q0);
@@ -320,6 +332,32 @@ static void errors(void **st)
     assert_int_equal(mdr_q31_in(&q, MDR_Q_D, -1.0f), INT32_MIN);
     assert_int_equal(mdr_q31_in(&q, MDR_Q_D, NAN), 0);
     assert_int_equal(mdr_q31_in(&q, MDR_Q_D, q.D0), MDR_Q29_ONE);
+    assert_int_equal(mdr_q31_in(&q, MDR_Q_D, INFINITY), INT32_MAX);
+    assert_int_equal(mdr_q31_in(&q, MDR_Q_D, -INFINITY), INT32_MIN);
+    /* the checked conversion names each failure and leaves raw alone */
+    {
+        int32_t r = 12345;
+        assert_int_equal(mdr_q31_from_si(NULL, MDR_Q_D, 1.0f, &r), MDR_E_NULL);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_D, 1.0f, NULL), MDR_E_NULL);
+        assert_int_equal(mdr_q31_from_si(&q, 9, 1.0f, &r), MDR_E_PARAM);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_D, NAN, &r), MDR_E_NONFINITE);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_F, -INFINITY, &r), MDR_E_NONFINITE);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_D, 4.0f * q.D0, &r), MDR_E_OVERFLOW);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_D, -4.000001f * q.D0, &r), MDR_E_OVERFLOW);
+        assert_int_equal(r, 12345);
+        /* 0 is a legal value, and the ends of the int32 range are reached
+         * (D0 a power of two: these are exact) */
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_D, 0.0f, &r), MDR_OK);
+        assert_int_equal(r, 0);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_D, -4.0f * q.D0, &r), MDR_OK);
+        assert_int_equal(r, INT32_MIN);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_D, 2147483520.0f / 536870912.0f * q.D0, &r), MDR_OK);
+        assert_int_equal(r, 2147483520);
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_A, 0.5f * q.L, &r), MDR_OK);
+        assert_int_equal(r, 536870912); /* 0.5 in Q1.30 (L / 2^30 exact) */
+        assert_int_equal(mdr_q31_from_si(&q, MDR_Q_F, -0.5f * q.F0, &r), MDR_OK);
+        assert_int_equal(r, -268435456); /* -0.5 in Q2.29 */
+    }
     assert_true(mdr_q31_out(&q, MDR_Q_F, MDR_Q29_ONE) == q.F0);
     assert_true(mdr_q31_out(NULL, MDR_Q_F, 1) == 0.0f);
     assert_true(mdr_q31_energy(NULL, 1) == 0.0f);

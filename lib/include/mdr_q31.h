@@ -230,9 +230,20 @@ mdr_status mdr_engine_outputs_q31(mdr_engine_q31 *e, uint8_t outputs);
 #if MDR_CFG_F32
 /**
  * @brief SI value -> raw q31 value of quantity q (MDR_Q_A/D/F/Z), rounded to
- *        nearest, saturated to the int32 range (float arithmetic; a helper
- *        for host code and for firmware that has float at hand).
- * @return the raw value; 0 for a NULL engine or an unknown q
+ *        nearest (float arithmetic; for host code and for firmware that has
+ *        float at hand), with every failure named.
+ * @param[in]  v    the value in SI units [m, m, N, m]
+ * @param[out] raw  the raw value, untouched unless MDR_OK
+ * @return MDR_OK, MDR_E_NULL (e or raw), MDR_E_PARAM (an unknown q, or an
+ *         engine without units), MDR_E_NONFINITE (v NaN or infinite),
+ *         MDR_E_OVERFLOW (v / unit outside the int32 range)
+ */
+mdr_status mdr_q31_from_si(const mdr_engine_q31 *e, uint8_t q, float v, int32_t *raw);
+/**
+ * @brief As mdr_q31_from_si(), saturating: the raw value, INT32_MAX /
+ *        INT32_MIN beyond the int32 range (also for +-inf); 0 for a NULL
+ *        engine, an unknown q or NaN, which 0 cannot tell from a legal
+ *        value: use mdr_q31_from_si() where the input may be bad.
  */
 int32_t mdr_q31_in(const mdr_engine_q31 *e, uint8_t q, float v);
 /** @brief Raw q31 value of quantity q -> SI (float). */
