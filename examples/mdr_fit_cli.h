@@ -45,10 +45,15 @@
 #include <unistd.h>
 
 struct fit_args {
-    const char *file, *model;
+    const char *file, *model, *tipfile;
     int map, f64, approach, jobs;
     uint8_t kind, method;
     double p[3], k_m, z_e, E0, w0;
+    /* --profile table: the samples as each arithmetic's contact takes them
+     * (radii, then slopes formed in double: mdr_host_tip_contact) */
+    uint16_t tm;
+    float *tip_f32;
+    double *tip_f64;
 };
 
 /* one result in double, whatever the arithmetic */
@@ -841,6 +846,51 @@ static int fit_map_cmd(const struct fit_args *A)
 
 /* ---- arguments ----------------------------------------------------------- */
 
+static int fit_checked(struct fit_args *Ap, int have_k, int have_E0, int have_w0);
+
+/* --profile table --file tip.csv: the samples read (r,f rows), their slopes
+ * formed in double and both arithmetics' copies made and checked as the
+ * contact takes them; 0, or 2 after the line naming the problem */
+static int fit_tip_samples(struct fit_args *A)
+{
+    double *r = NULL, *fv = NULL, *sl = NULL;
+    long n = read_table(A->tipfile, &r, &fv);
+    int rc = 0;
+    mdr_status st = MDR_OK;
+    if (n < 0) {
+        return usage_error("cannot read r,f pairs from", A->tipfile);
+    }
+    if (n > 65535) {
+        rc = usage_error("more than 65535 points in", A->tipfile);
+    } else if ((sl = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof *sl)) == NULL ||
+               tip_slopes(r, fv, n, sl) != 0) {
+        rc = usage_error("r must increase strictly in", A->tipfile);
+    } else {
+        mdr_contact_f64 c64;
+        mdr_contact_f32 c32;
+        A->tm = (uint16_t)n;
+        A->tip_f64 = malloc(2 * (size_t)n * sizeof *A->tip_f64);
+        A->tip_f32 = malloc(2 * (size_t)n * sizeof *A->tip_f32);
+        if (A->tip_f64 == NULL || A->tip_f32 == NULL) {
+            rc = usage_error("out of memory for", A->tipfile);
+        } else {
+            st = mdr_host_tip_contact_f64(&c64, r, sl, A->tm, 1.0, 0.0, A->tip_f64);
+            if (st == MDR_OK) {
+                st = mdr_host_tip_contact_f32(&c32, r, sl, A->tm, 1.0f, 0.0f, A->tip_f32);
+            }
+            if (st != MDR_OK) {
+                (void)cli_fail("profile", st);
+                rc = 2;
+            }
+        }
+    }
+    free(r);
+    free(fv);
+    free(sl);
+    A->kind = MDR_PROFILE_TABLE;
+    return rc;
+}
+
 static int fit_main(int argc, char **argv)
 {
     struct fit_args A;
@@ -876,6 +926,8 @@ static int fit_main(int argc, char **argv)
             A.map = f[2] == 'm';
         } else if (strcmp(f, "--profile") == 0) {
             profile = v;
+        } else if (strcmp(f, "--file") == 0) {
+            A.tipfile = v;
         } else if (strcmp(f, "--model") == 0) {
             A.model = v;
         } else if (strcmp(f, "--arith") == 0) {
@@ -927,7 +979,21 @@ static int fit_main(int argc, char **argv)
         return usage_error("missing --profile", NULL);
     }
     if (strcmp(profile, "table") == 0) {
-        return usage_error("--profile table: not yet in mdr fit", NULL);
+        int rc;
+        if (A.tipfile == NULL || np > 0) {
+            return usage_error(np > 0 ? "unknown or misplaced flag" : "--profile table needs --file tip.csv",
+                               np > 0 ? pname[0] : NULL);
+        }
+        rc = fit_tip_samples(&A);
+        if (rc == 0) {
+            rc = fit_checked(&A, have_k, have_E0, have_w0);
+        }
+        free(A.tip_f32);
+        free(A.tip_f64);
+        return rc;
+    }
+    if (A.tipfile != NULL) {
+        return usage_error("--file goes with --profile table", NULL);
     }
     for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
         if (strcmp(profiles[k].name, profile) == 0) {
@@ -952,6 +1018,13 @@ static int fit_main(int argc, char **argv)
             return usage_error("unknown or misplaced flag", pname[k]);
         }
     }
+    return fit_checked(&A, have_k, have_E0, have_w0);
+}
+
+/* The checks after the profile, and the command */
+static int fit_checked(struct fit_args *Ap, int have_k, int have_E0, int have_w0)
+{
+    struct fit_args A = *Ap;
     if (!have_k || !(A.k_m > 0.0) || A.k_m - A.k_m != 0.0) {
         return usage_error("fit needs --k-machine K > 0 (N/m)", NULL);
     }

@@ -9,6 +9,10 @@
 static mdr_status FIT_SFX(fit_tip)(const struct fit_args *A, FIT_SFX(mdr_contact) *tip)
 {
     FIT_T p[3] = {(FIT_T)A->p[0], (FIT_T)A->p[1], (FIT_T)A->p[2]};
+    if (A->kind == MDR_PROFILE_TABLE) { /* samples converted and checked by fit_tip_samples() */
+        const FIT_T *b = FIT_SFX(A->tip);
+        return FIT_SFX(mdr_contact_init_table)(tip, b, b + A->tm, A->tm, (FIT_T)1.0, (FIT_T)0.0);
+    }
     return FIT_SFX(mdr_contact_init)(tip, A->kind, p, (FIT_T)1.0, (FIT_T)0.0);
 }
 

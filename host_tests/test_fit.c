@@ -558,6 +558,54 @@ static void test_tabor(void **state)
         assert_int_equal(mdr_tabor_f64(&c, ze, -1.0, &mu, &R, NULL), MDR_E_RADIUS);
         assert_int_equal(mdr_tabor_f64(NULL, ze, 3e-9, &mu, &R, NULL), MDR_E_NULL);
     }
+#if MDR_CFG_PROFILE_TABLE
+    /* sampled tips: the apex curvature of the samples' model where it
+     * starts smooth (a sampled paraboloid, and a sphere of 1 um sampled every
+     * 25 nm: 1/f''(0) = R to O(h^2/R^2)); a worn (flat) or pointed apex
+     * takes a^2/g(a), the worn paraboloid's g = (a/R) sqrt(a^2 - b^2) and,
+     * for a cone with a paraboloid on it, f = r tan(theta) + r^2/(2R) (its
+     * apex curved, but pointed), g = (pi/2) x tan(theta) + x^2/R, worked
+     * out here */
+    {
+        enum { M = 41 };
+        double r[M], s[M], b = 4e-9, h = 0.5e-9, g;
+        int i, kind;
+        for (kind = 0; kind < 4; kind++) {
+            const double Rk = kind == 1 ? 1e-6 : 20e-9, hk = kind == 1 ? 25e-9 : h;
+            for (i = 0; i < M; i++) {
+                r[i] = i * hk;
+            }
+            for (i = 0; i + 1 < M; i++) { /* interval slopes of f */
+                double f0, f1;
+                if (kind == 0) {
+                    f0 = r[i] * r[i] / (2 * Rk), f1 = r[i + 1] * r[i + 1] / (2 * Rk);
+                } else if (kind == 1) {
+                    f0 = Rk - sqrt(Rk * Rk - r[i] * r[i]), f1 = Rk - sqrt(Rk * Rk - r[i + 1] * r[i + 1]);
+                } else if (kind == 2) {
+                    f0 = r[i] < b ? 0 : (r[i] * r[i] - b * b) / (2 * Rk);
+                    f1 = r[i + 1] < b ? 0 : (r[i + 1] * r[i + 1] - b * b) / (2 * Rk);
+                } else {
+                    f0 = r[i] * (tan(0.3) + r[i] / (2 * Rk)), f1 = r[i + 1] * (tan(0.3) + r[i + 1] / (2 * Rk));
+                }
+                s[i] = (f1 - f0) / (r[i + 1] - r[i]);
+            }
+            assert_int_equal(mdr_contact_init_table_f64(&c, r, s, M, E, 0.05), MDR_OK);
+            assert_int_equal(mdr_tabor_f64(&c, ze, 10e-9, &mu, &R, NULL), MDR_OK);
+            if (kind == 0) {
+                rel_le(R, Rk, 0, 1e-13, "sampled paraboloid: apex R");
+            } else if (kind == 1) {
+                /* the one-sided curvature is f'' near r = h: 1/R (1 + 3h^2/(2R^2) + ...) */
+                rel_le(R, Rk, 0, 2 * (hk / Rk) * (hk / Rk), "sampled sphere: apex R to 2 (h/R)^2");
+            } else if (kind == 2) {
+                g = 10e-9 / Rk * sqrt(100e-18 - b * b);
+                rel_le(R, 100e-18 / g, 0, 1e-12, "worn tip: a^2/g(a)");
+            } else {
+                g = M_PI / 2 * tan(0.3) * 10e-9 + 100e-18 / Rk; /* the cone's and the paraboloid's g */
+                rel_le(R, 100e-18 / g, 0, 1e-12, "pointed paraboloid (f'(0) != 0): a^2/g(a)");
+            }
+        }
+    }
+#endif
 }
 
 /* ---- bad input: named errors, nothing written ------------------------------------ */
