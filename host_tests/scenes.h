@@ -31,8 +31,9 @@ typedef struct {
 } scene;
 
 #define GOAL_SMOOTH 1e-4
-/* the flattened tip's table limits the accuracy near its rim (test_q31.c) */
-#define GOAL_FLATTIP 5e-3
+/* the flattened tip's table limits the force curve just above its rim
+ * (test_q31.c); its pull-offs meet GOAL_SMOOTH since the rim is a node */
+#define GOAL_FLATTIP 1e-3
 #define GAP_SAMPLES 600
 
 static const scene scenes[] = {
@@ -41,7 +42,7 @@ static const scene scenes[] = {
     {"power law n=3", "powerlaw", {MDR_PROFILE_POWERLAW, {5e11, 3, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH, 1.5e-9},
     {"flat punch", "flatpunch", {MDR_PROFILE_FLATPUNCH, {1e-6, 0, 0}, 1e6, 0.01}, 1e-6, 0, GOAL_SMOOTH, 5e-16},
     {"exact sphere", "sphere", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_SMOOTH, 4e-9},
-    {"flattened tip", "flattip", {MDR_PROFILE_FLATTIP, {1e-6, 0.2e-6, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_FLATTIP, 2e-3},
+    {"flattened tip", "flattip", {MDR_PROFILE_FLATTIP, {1e-6, 0.2e-6, 0}, 1e6, 0.01}, 0.9e-6, 0, GOAL_FLATTIP, 2.5e-3},
     {"wavy (4.54)", "wavy", {MDR_PROFILE_WAVY, {100e-6, 0.15e-6, 5e-6}, 1e6, 0.7957747154594767}, 80e-6, 0,
      GOAL_SMOOTH, 8e-6},
     {"tabulated sphere", "table", {MDR_PROFILE_SPHERE, {1e-6, 0, 0}, 1e6, 0.01}, 0.9e-6, 1, GOAL_SMOOTH, 4e-7},

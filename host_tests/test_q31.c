@@ -35,11 +35,13 @@
  *     (3.6 LSB), because how much of it a cycle meets depends on where the
  *     constants' rounding fell;
  *   the goals of issue 4, asserted too: e_curve and e_po below
- *     GOAL_SMOOTH = 1e-4, except the flattened tip: GOAL_FLATTIP = 5e-3, the
- *     error of the 1024-spring table itself (the f64 engine's is the same): at
- *     the rim x = b of the flat g' grows like 1/sqrt(x - b), which quadratic
- *     springs of width h resolve only to O(h^1.5), and the grips pull-off
- *     lies close to the rim.
+ *     GOAL_SMOOTH = 1e-4, except the flattened tip's e_curve: GOAL_FLATTIP =
+ *     1e-3 (measured 6.3e-4 through a machine), the error of the 1024-spring
+ *     table itself (the f64 engine's is the same): just above the rim x = b
+ *     of the flat g' grows like 1/sqrt(x - b), which quadratic springs of
+ *     width h resolve only to O(h^1.5). Its pull-offs meet GOAL_SMOOTH
+ *     (measured 1.1e-6): the table puts the rim on a node (issue 16; 3.7e-3
+ *     with the rim inside a spring).
  * The engine is set up by mdr_engine_init_q31_f64 (constants to 2^-30);
  * inputs are converted to Q2.29 with double arithmetic (rounded), outputs
  * back to SI the same way, with the double units L + L_lo and 2E* L D0.
@@ -231,7 +233,7 @@ static void scenes_vs_ref(void **st)
                 err_le(r.lsbf, r.tolf, what);
                 /* the goals */
                 assert_true(r.eC < scenes[k].goal);
-                assert_true(r.ePo < scenes[k].goal);
+                assert_true(r.ePo < GOAL_SMOOTH);
             }
         }
     }
