@@ -846,7 +846,7 @@ static int fit_map_cmd(const struct fit_args *A)
 
 /* ---- arguments ----------------------------------------------------------- */
 
-static int fit_checked(struct fit_args *Ap, int have_k, int have_E0, int have_w0);
+static int fit_checked(const struct fit_args *Ap, int have_k, int have_E0, int have_w0);
 
 /* --profile table --file tip.csv: the samples read (r,f rows), their slopes
  * formed in double and both arithmetics' copies made and checked as the
@@ -856,7 +856,6 @@ static int fit_tip_samples(struct fit_args *A)
     double *r = NULL, *fv = NULL, *sl = NULL;
     long n = read_table(A->tipfile, &r, &fv);
     int rc = 0;
-    mdr_status st = MDR_OK;
     if (n < 0) {
         return usage_error("cannot read r,f pairs from", A->tipfile);
     }
@@ -874,7 +873,7 @@ static int fit_tip_samples(struct fit_args *A)
         if (A->tip_f64 == NULL || A->tip_f32 == NULL) {
             rc = usage_error("out of memory for", A->tipfile);
         } else {
-            st = mdr_host_tip_contact_f64(&c64, r, sl, A->tm, 1.0, 0.0, A->tip_f64);
+            mdr_status st = mdr_host_tip_contact_f64(&c64, r, sl, A->tm, 1.0, 0.0, A->tip_f64);
             if (st == MDR_OK) {
                 st = mdr_host_tip_contact_f32(&c32, r, sl, A->tm, 1.0f, 0.0f, A->tip_f32);
             }
@@ -1022,7 +1021,7 @@ static int fit_main(int argc, char **argv)
 }
 
 /* The checks after the profile, and the command */
-static int fit_checked(struct fit_args *Ap, int have_k, int have_E0, int have_w0)
+static int fit_checked(const struct fit_args *Ap, int have_k, int have_E0, int have_w0)
 {
     struct fit_args A = *Ap;
     if (!have_k || !(A.k_m > 0.0) || A.k_m - A.k_m != 0.0) {
