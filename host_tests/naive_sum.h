@@ -7,7 +7,7 @@
  * double, one spring at a time, without the prefix sums G_i.
  */
 #define NAIVE_SUM(SFX)                                                                     \
-    static double naive_F_##SFX(const mdr_table_##SFX *t, double E, double a, double d)    \
+    static inline double naive_F_##SFX(const mdr_table_##SFX *t, double E, double a, double d)    \
     {                                                                                      \
         double sum = 0, h = t->h;                                                          \
         long j, k = (long)(a / h);                                                         \
@@ -34,7 +34,7 @@ NAIVE_SUM(f64)
  * recomputed here in double from the nodes: the band of the rule of Hess
  * checked against something the engine did not compute */
 #define TABLE_G(SFX)                                                                       \
-    static double table_g_##SFX(const mdr_table_##SFX *t, double a)                        \
+    static inline double table_g_##SFX(const mdr_table_##SFX *t, double a)                        \
     {                                                                                      \
         double h = t->h, e, s, be;                                                         \
         long k = (long)(a / h);                                                            \
