@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # libmdr — one Makefile for the library, its tests, the reference and the
 # cross builds.
 #

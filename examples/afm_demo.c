@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * afm_demo.c: an AFM pull-off scene with libmdr (f32, as on the target).
  *

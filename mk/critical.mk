@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Issue 16: critical states you can trust everywhere.
 #   crit-sweep     mdr_critical against closed forms worked out in long
 #                  double (host_tests/crit_sweep.c), f32 and f64; run by

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/fit.mk: fitting measured force curves (lib/include/mdr_fit.h, the
 # `mdr fit` command), included at the end of the Makefile.
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/python.mk: the Python package in python/ (cffi in API mode over the
 # library's sources; README "Python").
 #

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_contact.h: equilibrium, stability, critical states and stress of an
  * adhesive axisymmetric contact (closed forms of the equivalent profile).

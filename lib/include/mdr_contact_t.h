@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_contact_t.h: declarations of one arithmetic of the contact module.
  *

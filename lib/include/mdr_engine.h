@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_engine.h: the real-time spring engine. A fixed-size table of springs
  * (caller-owned, or a const array generated on the host by `mdr table`) and

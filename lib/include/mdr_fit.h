@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_fit.h: from a measured force curve to E*, w, the contact point and the
  * force baseline (Levenberg-Marquardt on the library's quasi-static model),

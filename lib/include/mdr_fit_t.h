@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_fit_t.h: declarations of one arithmetic of the fit module.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_scene.h: table-free scenes. Profiles whose equivalent profile is a
  * monomial (paraboloid, cone, power laws with integer n) stepped like the

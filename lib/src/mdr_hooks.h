@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_hooks.h: the port hooks lib/ uses, with their defaults. The port's
  * mdr_port.h (port/host, port/cortex-m, port/riscv, or a firmware's own,

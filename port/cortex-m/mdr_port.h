@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/mdr_port.h: hooks for Arm Cortex-M (arm-none-eabi-gcc).
  * Chosen by -Iport/cortex-m; compiler flags per core: port/cortex-m/port.mk.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/cortex-m/port.mk: compiler flags per Cortex-M core (arm-none-eabi-gcc)
 # and the files of the bare-metal test harness. Included by the Makefile;
 # a firmware build takes the line of its core. lib/ also needs the flags of

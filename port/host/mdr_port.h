@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/host/mdr_port.h: hooks for host builds (x86-64, aarch64 with an FPU).
  * Chosen by the include path (-Iport/host). The hooks lib/ uses and their

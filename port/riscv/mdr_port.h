@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv/mdr_port.h: hooks for RV32 (riscv64-unknown-elf-gcc,
  * -march=rv32...). Chosen by -Iport/riscv; compiler flags per core:

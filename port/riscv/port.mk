@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/riscv/port.mk: compiler flags per RV32 core (riscv64-unknown-elf-gcc,
 # multilib rv32). Included by the Makefile; a firmware build takes the line
 # of its core. lib/ also needs the flags of lib/Filelists.mk

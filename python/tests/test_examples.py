@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The example a scientist copies (examples/afm_worn_tip.py) and the README's
 Python quick start run as written; the example writes its plot, and its
 fresh-tip pull-off through the engine agrees with the closed form to the 4
