@@ -613,3 +613,4 @@ clean:
 
 include mk/python.mk
 include mk/fit.mk
+include mk/docs.mk
