@@ -158,7 +158,7 @@ FUZZ_TIME ?=
 FUZZ_RUNS ?= 3000
 FUZZ_ARGS = $(if $(FUZZ_TIME),-max_total_time=$(FUZZ_TIME) -seed=0,-runs=$(FUZZ_RUNS) -seed=1)
 FUZZ_HDRS := host_tests/fuzz/fuzz.h host_tests/fuzz/fuzz_engine_t.h host_tests/fuzz/fuzz_init_t.h examples/tip_csv.h
-FUZZ_CFLAGS := -std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -Iport/host -Iexamples
+FUZZ_CFLAGS := -std=c99 -fno-math-errno -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -Iport/host -Iexamples
 $(B)/fuzz/fuzz_%: host_tests/fuzz/fuzz_%.c $(FUZZ_HDRS) $(LIB_SRC) $(LIB_DEPS)
 	@mkdir -p $(@D)
 	clang -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(FUZZ_CFLAGS) \

@@ -22,6 +22,7 @@
 #ifndef MDR_PORT_OWN_SQRT
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
 #define MDR_PORT_SQRT_F64(x) __builtin_sqrt(x)
+#define MDR_PORT_SQRT_BUILTIN 1 /* needs -fno-math-errno (mdr_hooks.h) */
 #endif
 
 #define MDR_ASSERT(cond) ((cond) ? (void)0 : __builtin_trap())
