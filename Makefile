@@ -614,3 +614,4 @@ clean:
 include mk/python.mk
 include mk/fit.mk
 include mk/docs.mk
+include mk/install.mk
