@@ -17,12 +17,8 @@ TESTS += test_fit
 SAN_TESTS += test_fit
 TGT_TESTS_m4 += test_fit
 TGT_RUNS += $(B)/tgt-m4/test_fit.run
-DEB_PKGS += gnuplot-nox
 
-$(B)/host/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
+# test_fit is built by the suite rules of mk/tests.mk
 host-tests: $(B)/host/test_fit fit-cli
 san-tests: $(B)/san/test_fit
 
@@ -55,8 +51,7 @@ bench-fit: $(B)/host/bench_fit $(B)/host/mdr
 	} > $(BENCH_OUT)/fit.md
 	@bash host_tests/bench_fit_map.sh $(B)/host/mdr $(FIT_MAP_CURVES) >> $(BENCH_OUT)/fit.md
 	@cat $(BENCH_OUT)/fit.md
-	@awk 'FNR == NR { t = t $$0 "\n"; next } /<!-- bench-fit:begin/ { print; printf "%s", t; skip = 1; next } \
-	  /<!-- bench-fit:end/ { skip = 0 } !skip' $(BENCH_OUT)/fit.md docs/fitting.md > $(B)/bench/fitting.md && \
+	@awk -v name=bench-fit -f mk/splice.awk $(BENCH_OUT)/fit.md docs/fitting.md > $(B)/bench/fitting.md && \
 	  cp $(B)/bench/fitting.md docs/fitting.md
 	@echo "bench-fit: $(BENCH_OUT)/fit.md written; docs/fitting.md's table updated"
 bench: bench-fit
