@@ -66,9 +66,11 @@ $(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h examples/mdr_host.h examp
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
 $(B)/host/afm_demo: examples/afm_demo.c $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
+DEMO_DIR = $(B)/demo
 demo: $(B)/host/afm_demo $(B)/host/mdr
-	./$(B)/host/afm_demo $(B)/demo
-	@sh examples/demo_plot.sh $(B)/demo
+	./$(B)/host/afm_demo $(DEMO_DIR)
+	gnuplot -e "dir='$(DEMO_DIR)'" examples/afm_demo.gp
+	@echo "demo: $(DEMO_DIR)/afm_fd.png, $(DEMO_DIR)/afm_cycle.png"
 
 # ---- the tests ------------------------------------------------------------------
 # The README's test command (apt-get is make deps' business, not this one's):
@@ -115,3 +117,4 @@ include mk/python.mk
 include mk/fit.mk
 include mk/docs.mk
 include mk/install.mk
+include mk/demo.mk
