@@ -3,6 +3,7 @@
 # host_tests/bench/ and docs/performance.md, never README.md.
 #
 # engine step cost against N and against the naive O(N) force sum (one run)
+.PHONY: bench step-cost
 $(B)/host/bench_engine: host_tests/bench_engine.c host_tests/bench_scene.h $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 -Wall -Wextra -Werror -Ilib/include -O2 $< $(B)/host/libmdr.a -lm -o $@
 # instructions per step on the emulated Cortex-M4F and M3 (QEMU -icount

@@ -8,6 +8,7 @@
 # Checks: no undefined symbol outside the allow-list in lib/ objects, no
 # double-precision helper in any link (all are f32 or q31 programs), no
 # floating-point helper at all in the q31 step (mdr_q31.o).
+.PHONY: cross size
 CROSS_WARN := $(MDR_REQUIRED_CFLAGS) -Os $(WARN)
 CORE_m0 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m0) -Iport/cortex-m
 CORE_m4f := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m4f) -Iport/cortex-m

@@ -15,6 +15,7 @@
 # make fuzz-replay runs the committed corpus through the same targets built
 # with gcc and ASan+UBSan (host_tests/fuzz/replay.c), no libFuzzer needed.
 # Both are in make test.
+.PHONY: fuzz fuzz-replay
 FUZZ_TARGETS := init step table
 FUZZ_TIME ?=
 FUZZ_RUNS ?= 3000

@@ -5,6 +5,7 @@
 # the Cortex-M4F and RV32IMAC ports), port/, examples/ and ref/. Configuration:
 # .clang-tidy (checks and why some are off) and .cppcheck-suppressions (what
 # cppcheck is told to ignore, each with its reason); every finding fails.
+.PHONY: lint
 LINT_LIB := lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c
 LINT_HOST := examples/mdr_cli.c examples/afm_demo.c ref/mdr_ref.c ref/mdr_refgen.c ref/vecdiff.c \
              ref/gen_tables.c port/link_check.c port/sizes.c

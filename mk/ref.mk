@@ -2,6 +2,7 @@
 # mk/ref.mk: the GSL reference vectors (make ref-check) and the quadrature
 # tables (make tables).
 #
+.PHONY: ref-check tables
 $(B)/host/mdr_refgen: ref/mdr_refgen.c $(REF_SRC) ref/mdr_ref.h
 	@mkdir -p $(@D)
 	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(REF_SRC) $(GSL_LIBS) -o $@

@@ -24,6 +24,7 @@
 # root (M3, RV32IMAC: lib/'s own routine) those of the host built with
 # MDR_PORT_OWN_SQRT, whose CLI also makes that core's generated table for
 # the engine test.
+.PHONY: target-test
 TGT_CORES := m4 m7 m3 m0 rv32imac rv32imafc
 TGT_m4 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m4f) -Iport/cortex-m
 TGT_m7 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m7) -Iport/cortex-m

@@ -15,6 +15,7 @@
 # host_tests/, links libmdr.a and cmocka; the suites in TESTS_WITH_REF also
 # compile the GSL reference (ref/mdr_ref.c) and link GSL. A new suite: add
 # its name to TESTS (and SAN_TESTS).
+.PHONY: host-tests san-tests matrix stress q31-exact mutate mutate-quick
 TESTS := test_unit test_vectors test_ref test_gsl test_engine test_engine_ref test_q31 test_scene test_step test_config test_critical
 SAN_TESTS := test_unit test_vectors test_engine test_q31 test_scene test_step test_critical
 TESTS_WITH_REF := test_ref test_gsl test_engine_ref test_q31
