@@ -111,11 +111,9 @@ size: cross
 	    'NR>1{printf "%-16s %7d %7d   %s\n",c,$$1+$$2,r,d}';)
 	@echo; printf '%-10s %s\n' core "instance sizes in bytes (sizeof on the core)"
 	@$(foreach k,$(CROSS_CORES),k=$(k); nm=$(call xtool,$(k),nm); \
-	  $$nm -S $(B)/$$k/sizes.o | awk -v k=$$k 'function hex(h, i, v) { v = 0; for (i = 1; i <= length(h); i++) v = 16 * v + index("0123456789abcdef", substr(h, i, 1)) - 1; return v } \
-	    {n=$$4; sub(/^mdr_sizeof_/,"",n); s=s sprintf(" %s %d", n, hex($$2))} END{printf "%-10s%s\n", k, s}';)
+	  $$nm -S $(B)/$$k/sizes.o | awk -v k=$$k -f mk/instance_sizes.awk;)
 	@echo; echo "worst stack depth of a step function (d, F or z), bytes: call graph of -fstack-usage, libgcc helpers not counted"
 	@for k in $(CROSS_CORES); do for a in f32 q31; do \
 	  awk -v roots="^mdr_engine_step_[dFz]_$$a\$$" -f port/stack_depth.awk $(B)/$$k/*.ci | sort -k2 -n | tail -1 | \
-	    awk -v k=$$k -v a=$$a '{ext = $$0; if (!sub(/^.*\[\+ /, "", ext)) ext = ""; sub(/ \]$$/, "", ext); \
-	      n = split(ext, x, " "); printf "%-10s %s %5d   %s%s\n", k, a, $$2, $$3, (n ? sprintf("  + %d libgcc/mem helpers", n) : "")}'; \
+	    awk -v k=$$k -v a=$$a -f mk/stack_line.awk; \
 	 done; done

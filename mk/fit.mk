@@ -46,8 +46,7 @@ bench-fit: $(B)/host/bench_fit $(B)/host/mdr
 	@{ cat $(B)/bench/fit_time.md; echo; \
 	  echo "| callgrind (instructions, host build $(CFLAGS)) | per curve | per model point |"; \
 	  echo "| --- | ---: | ---: |"; \
-	  for f in $(B)/bench/fitcg/cg.out.*; do awk '/^desc: Trigger: Client Request: /{sub(/^desc: Trigger: Client Request: /, ""); l = $$0} \
-	    /^summary: /{ if (l ~ /^model/) printf "| %s | | %.0f |\n", l, $$2 / 32 / 2000; else printf "| %s | %.0f | |\n", l, $$2 / 32 }' $$f; done; \
+	  for f in $(B)/bench/fitcg/cg.out.*; do awk -f mk/callgrind_fit.awk $$f; done; \
 	} > $(BENCH_OUT)/fit.md
 	@bash host_tests/bench_fit_map.sh $(B)/host/mdr $(FIT_MAP_CURVES) >> $(BENCH_OUT)/fit.md
 	@cat $(BENCH_OUT)/fit.md
