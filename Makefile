@@ -1,29 +1,32 @@
-# libmdr — one Makefile for the library, its tests, the reference and the
-# cross builds.
+# SPDX-License-Identifier: MIT
+# libmdr: the library, the CLI and the demo for the host, and the tests.
 #
-#   make            library, CLI and demo for the host (build/host/)
-#   make test       everything that proves the library (see `test:` below)
-#   make demo       AFM pull-off demo (prints a table, writes CSV/PNG)
-#   make ref-check  regenerate the reference vectors with GSL and diff them
-#   make size       flash, RAM, instance sizes and step stack depth per core
-#   make cross      cross builds + symbol checks (Cortex-M0/M4F/M7, RV32IMAC/IMAFC)
-#   make target-test  the target-independent tests on QEMU (Cortex-M0/M3/
-#                   M4F/M7, RV32IMAC/IMAFC)
-#   make bench      benchmark matrix (time, instructions, error) -> host_tests/bench/
-#   make stress     numerical stress sweep (STRESS=long: the dense one)
-#   make matrix     build matrix over the options of mdr_options.h (MATRIX=full)
-#   make lint       cppcheck + clang-tidy (configuration: .clang-tidy,
-#                   .cppcheck-suppressions)
-#   make fuzz       libFuzzer targets, FUZZ_TIME s each (fuzz-replay: the corpus)
-#   make mutate     the mutation gate: every deliberate bug of
-#                   host_tests/mutations.txt must fail a suite (mutate-quick:
-#                   one per module, in make test)
-#   make tables     regenerate lib/src/math/mdr_tables.h (quadrature nodes)
-#   make deps       install missing Debian packages (as root) or name them
-#   make python     the Python package in place (python-test, python-bench: mk/python.mk)
+#   make              libmdr.a, the CLI mdr and the demo program (build/host/)
+#   make demo         build mdr and the AFM demo and run it: a table on the
+#                     terminal, CSV and PNG plots in build/demo/
+#   make test         everything that proves the library (the README's test
+#                     command; about 12 minutes on two cores)
+#   make deps         install the Debian packages of mk/packages.txt (apt-get,
+#                     through sudo when not root); deps-check only names
+#                     the missing ones
+#   make install PREFIX=/usr/local   headers, libmdr.a, libmdr.so, mdr.pc
+#   make docs         the API reference (Doxygen) in build/docs/html
+#   make clean        remove build/
 #
-# CC, CFLAGS and CROSS_COMPILE given on the command line are respected;
-# the flags the library needs are kept apart in MDR_CFLAGS.
+# Options: CC (default gcc), CFLAGS (default -O2 -g), CROSS_COMPILE (a
+# prefix such as aarch64-linux-gnu-); the flags the library needs are kept
+# apart in MDR_CFLAGS. B is the build directory (default build).
+#
+# Everything else is in mk/, one file per topic, each listing its targets:
+#   mk/tests.mk    host and sanitizer suites, matrix, stress, q31-exact, mutate
+#   mk/fuzz.mk     fuzz, fuzz-replay          mk/critical.mk  crit-sweep
+#   mk/cross.mk    cross, size                mk/target.mk    target-test (QEMU)
+#   mk/lint.mk     lint                       mk/bench.mk     bench, step-cost
+#   mk/ref.mk      ref-check, tables          mk/fit.mk       fit suites, bench-fit
+#   mk/python.mk   python, python-test        mk/docs.mk      docs, headers, spdx-check
+#   mk/install.mk  install, install-check, cmake-check, errno-check
+# A firmware build does not use this Makefile: lib/Filelists.mk (make),
+# CMakeLists.txt (CMake) or the four files of lib/src (any IDE).
 
 ifeq ($(origin CC),default)
 CC := gcc
@@ -31,6 +34,7 @@ endif
 CFLAGS ?= -O2 -g
 CROSS_COMPILE ?=
 HOSTCC := $(CROSS_COMPILE)$(CC)
+PYTHON := /usr/bin/python3
 
 B := build
 WARN := -Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow -Wvla -Werror
@@ -40,152 +44,46 @@ GSL_LIBS := -lgsl -lgslcblas -lm
 
 MDR_ROOT := .
 include lib/Filelists.mk
+include port/cortex-m/port.mk
+include port/riscv/port.mk
 LIB_SRC := $(MDR_SRC_ALL)
 LIB_DEPS := $(MDR_DEPS) $(wildcard lib/src/*.c port/*/mdr_port.h)
 REF_SRC := ref/mdr_ref.c
 
-.PHONY: step-cost mutate mutate-quick matrix lint fuzz fuzz-replay stress target-test q31-exact bench all test demo ref-check size cross tables deps clean host-tests san-tests check-ref
+.PHONY: all demo test deps deps-check clean
 
 all: $(B)/host/libmdr.a $(B)/host/mdr $(B)/host/afm_demo
 
-# ---- host library: one object per arithmetic --------------------------------
+# ---- the library: one object per arithmetic ----------------------------------
 $(B)/host/%.o: lib/src/%.c $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(HOSTCC) $(MDR_CFLAGS) $(CFLAGS) -c $< -o $@
-
 $(B)/host/libmdr.a: $(B)/host/mdr_f32.o $(B)/host/mdr_f64.o $(B)/host/mdr_q31.o $(B)/host/mdr_status.o
 	$(CROSS_COMPILE)ar rcs $@ $^
 
+# ---- the CLI and the demo -------------------------------------------------------
 $(B)/host/mdr: examples/mdr_cli.c examples/mdr_cli_t.h examples/mdr_host.h examples/mdr_host_t.h examples/tip_csv.h $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
-
 $(B)/host/afm_demo: examples/afm_demo.c $(B)/host/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include $(CFLAGS) $< $(B)/host/libmdr.a -lm -o $@
+DEMO_DIR = $(B)/demo
+demo: $(B)/host/afm_demo $(B)/host/mdr
+	./$(B)/host/afm_demo $(DEMO_DIR)
+	gnuplot -e "dir='$(DEMO_DIR)'" examples/afm_demo.gp
+	@echo "demo: $(DEMO_DIR)/afm_fd.png, $(DEMO_DIR)/afm_cycle.png"
 
-# ---- tests ------------------------------------------------------------------
-# Each test binary is built twice: plain, and with address+undefined sanitizers
-# on the library and the test (san/).
-TESTS := test_unit test_vectors test_ref test_gsl test_engine test_engine_ref test_q31 test_scene test_step test_config test_critical
-
-# a const spring table generated by the CLI, compiled into test_engine
-$(B)/host/gen_tip.c: $(B)/host/mdr
-	./$(B)/host/mdr table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --name gen_tip > $@
-$(B)/host/test_engine_ref: host_tests/test_engine_ref.c host_tests/test_util.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) $(B)/host/libmdr.a -lcmocka $(GSL_LIBS) -o $@
-$(B)/host/test_q31: host_tests/test_q31.c host_tests/scenes.h host_tests/test_util.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) $(B)/host/libmdr.a -lcmocka $(GSL_LIBS) -o $@
-$(B)/host/test_engine: host_tests/test_engine.c host_tests/test_util.h host_tests/bench_matrix.h host_tests/scenes.h $(B)/host/gen_tip.c $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/gen_tip.c $(B)/host/libmdr.a -lcmocka -lm -o $@
-
-$(B)/host/test_step: host_tests/test_step.c host_tests/test_util.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_step: host_tests/test_step.c host_tests/test_util.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
-$(B)/host/test_scene: host_tests/test_scene.c host_tests/test_util.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_scene: host_tests/test_scene.c host_tests/test_util.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
-$(B)/host/test_config: host_tests/test_config.c host_tests/test_util.h host_tests/closed_forms.h host_tests/test_config_t.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/host/test_unit: host_tests/test_unit.c host_tests/test_util.h host_tests/closed_forms.h host_tests/contact_util.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/host/test_vectors: host_tests/test_vectors.c host_tests/fl.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/host/test_ref: host_tests/test_ref.c host_tests/test_util.h $(REF_SRC) ref/mdr_ref.h
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) -lcmocka $(GSL_LIBS) -o $@
-$(B)/host/test_gsl: host_tests/test_gsl.c host_tests/test_util.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(REF_SRC) $(B)/host/libmdr.a -lcmocka $(GSL_LIBS) -o $@
-
-SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-$(B)/san/libmdr.a: $(LIB_SRC) $(LIB_DEPS)
-	@mkdir -p $(@D)
-	for f in $(LIB_SRC); do $(HOSTCC) $(MDR_CFLAGS) -O1 -g $(SAN) -c $$f -o $(B)/san/$$(basename $$f .c).o || exit 1; done
-	ar rcs $@ $(B)/san/mdr_f32.o $(B)/san/mdr_f64.o $(B)/san/mdr_q31.o $(B)/san/mdr_status.o
-$(B)/san/test_unit: host_tests/test_unit.c host_tests/test_util.h host_tests/closed_forms.h host_tests/contact_util.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_vectors: host_tests/test_vectors.c host_tests/fl.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_engine: host_tests/test_engine.c host_tests/test_util.h host_tests/bench_matrix.h host_tests/scenes.h $(B)/host/gen_tip.c $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/host/gen_tip.c $(B)/san/libmdr.a -lcmocka -lm -o $@
-
-host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
-	@for t in $(TESTS); do echo "== $$t"; ./$(B)/host/$$t || exit 1; done
-	@echo "== cli"; bash host_tests/test_cli.sh $(B)/host/mdr
-
-$(B)/san/test_q31: host_tests/test_q31.c host_tests/scenes.h host_tests/test_util.h $(REF_SRC) ref/mdr_ref.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(REF_SRC) $(B)/san/libmdr.a -lcmocka $(GSL_LIBS) -o $@
-
-SAN_TESTS := test_unit test_vectors test_engine test_q31 test_scene test_step test_critical
-include mk/critical.mk
-san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
-	@for t in $(SAN_TESTS); do echo "== sanitized $$t"; ./$(B)/san/$$t || exit 1; done
-
-# Build matrix over the compile-time options (lib/include/mdr_options.h):
-# every configuration compiles warning-free and passes the suites that
-# apply to it (host_tests/matrix.sh). MATRIX=short (in make test, ~40 s):
-# each option off at least once, port/configs/*, the forbidden
-# combinations; MATRIX=full: all 384 combinations, library and
-# test_config each (~3 min).
-MATRIX ?= short
-matrix: $(B)/host/gen_tip.c
-	bash host_tests/matrix.sh $(MATRIX) $(B)/host/gen_tip.c
-
-# Numerical stress sweep (host_tests/stress.c): every parameter over its
-# range and beyond, f32/f64/q31; short grids in make test, STRESS=long for
-# the dense ones (minutes).
-STRESS ?= short
-$(B)/host/stress: host_tests/stress.c host_tests/fl.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(B)/host/libmdr.a -lm -o $@
-stress: $(B)/host/stress
-	./$(B)/host/stress $(STRESS)
-
-# Fuzzing (host_tests/fuzz/): libFuzzer targets for the init functions
-# (fuzz_init), the tabulated-profile parser and gap tables (fuzz_table) and
-# the step functions with arbitrary input sequences (fuzz_step), built with
-# clang -fsanitize=fuzzer,address,undefined. make fuzz runs each for
-# FUZZ_RUNS inputs from seed 1 and a fresh working corpus (in make test:
-# the same run on every machine), or with FUZZ_TIME=600 for that many
-# seconds from a random seed and the working corpus kept in build/fuzz/
-# (the long run, on demand), always from the committed corpus too; an
-# input that fails is copied into host_tests/fuzz/corpus/<target>/ (commit
-# it: from then on it is a regression test) and the run fails.
-# make fuzz-replay runs the committed corpus through the same targets built
-# with gcc and ASan+UBSan (host_tests/fuzz/replay.c), no libFuzzer needed.
-# Both are in make test.
-FUZZ_TARGETS := init step table
-FUZZ_TIME ?=
-FUZZ_RUNS ?= 3000
-FUZZ_ARGS = $(if $(FUZZ_TIME),-max_total_time=$(FUZZ_TIME) -seed=0,-runs=$(FUZZ_RUNS) -seed=1)
-FUZZ_HDRS := host_tests/fuzz/fuzz.h host_tests/fuzz/fuzz_engine_t.h host_tests/fuzz/fuzz_init_t.h examples/tip_csv.h
-FUZZ_CFLAGS := -std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -Iport/host -Iexamples
-$(B)/fuzz/fuzz_%: host_tests/fuzz/fuzz_%.c $(FUZZ_HDRS) $(LIB_SRC) $(LIB_DEPS)
-	@mkdir -p $(@D)
-	clang -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(FUZZ_CFLAGS) \
-	  $< $(LIB_SRC) -lm -o $@
-$(B)/san/replay_%: host_tests/fuzz/fuzz_%.c host_tests/fuzz/replay.c $(FUZZ_HDRS) $(B)/san/libmdr.a
-	$(HOSTCC) $(FUZZ_CFLAGS) -O1 -g $(SAN) $< host_tests/fuzz/replay.c $(B)/san/libmdr.a -lm -o $@
-fuzz-replay: $(addprefix $(B)/san/replay_,$(FUZZ_TARGETS))
-	@for t in $(FUZZ_TARGETS); do printf '== fuzz corpus %s: ' $$t; \
-	  ./$(B)/san/replay_$$t host_tests/fuzz/corpus/$$t || exit 1; done
-fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ_TARGETS))
-	@set -e; for t in $(FUZZ_TARGETS); do \
-	  w=$(B)/fuzz/work_$$t; rm -rf $(B)/fuzz/art_$$t; $(if $(FUZZ_TIME),,rm -rf $$w;) mkdir -p $$w $(B)/fuzz/art_$$t; \
-	  if ./$(B)/fuzz/fuzz_$$t $(FUZZ_ARGS) -timeout=10 -rss_limit_mb=2048 \
-	       -artifact_prefix=$(B)/fuzz/art_$$t/ $$w host_tests/fuzz/corpus/$$t > $(B)/fuzz/$$t.log 2>&1; then \
-	    echo "== fuzz $$t: $$(grep -o 'Done [0-9]* runs in [0-9]* second' $(B)/fuzz/$$t.log | tail -1)s, \
-	      coverage $$(grep -o 'cov: [0-9]*' $(B)/fuzz/$$t.log | tail -1 | cut -d' ' -f2), no failure"; \
-	  else \
-	    tail -40 $(B)/fuzz/$$t.log; cp $(B)/fuzz/art_$$t/* host_tests/fuzz/corpus/$$t/; \
-	    echo "fuzz $$t: failing input copied to host_tests/fuzz/corpus/$$t/ (commit it)"; exit 1; \
-	  fi; done
-
-# The README's test command. Installs what is missing (deps), then: host
-# tests (unit, lib vs committed ref vectors, ref vs closed forms, lib vs GSL
-# directly, CLI), the same under ASan+UBSan, the q31 bit-exactness across
-# compilers, the cross builds with their symbol checks, and the target tests
-# on QEMU.
-test: deps
+# ---- the tests ------------------------------------------------------------------
+# The README's test command (apt-get is make deps' business, not this one's):
+# the quick checks of the sources, the docs and the builds a project uses
+# (CMake, install, pkg-config), the host suites and the CLI, static
+# analysis, the same suites under ASan+UBSan, the option matrix, fuzzing,
+# the stress sweep, the q31 bit-exactness across compilers, the mutation
+# gate, the cross builds with their symbol checks, the target tests on QEMU
+# and the Python package.
+test: deps-check
+	$(MAKE) --no-print-directory spdx-check headers-check docs errno-check
 	$(MAKE) --no-print-directory host-tests
+	$(MAKE) --no-print-directory demo-check cmake-check install-check
 	$(MAKE) --no-print-directory lint
 	$(MAKE) --no-print-directory san-tests
 	$(MAKE) --no-print-directory matrix
@@ -197,418 +95,26 @@ test: deps
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
 	$(MAKE) --no-print-directory python-test
-	@echo "suites: $(words $(TESTS) cli python lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
-# The q31 step is integer arithmetic: the same inputs must give the same
-# outputs whatever the compiler and optimisation level (a difference means
-# undefined or implementation-defined behaviour), and the committed
-# fingerprint (host_tests/q31_trace.expected): a change of the arithmetic
-# changes that file in the same commit, with the reason.
-EXACT_BUILDS := gcc:-O0 gcc:-O2 gcc:-O3 clang:-O0 clang:-O2 clang:-Os
-Q31_EXPECTED := host_tests/q31_trace.expected
-q31-exact:
-	@mkdir -p $(B)/exact
-	@set -e; ref="$$(cat $(Q31_EXPECTED))"; for b in $(EXACT_BUILDS); do \
-	  cc=$${b%%:*}; opt=$${b#*:}; out=$(B)/exact/q31_trace_$$cc$$opt; \
-	  $$cc -std=c99 -ffreestanding -fno-math-errno $(WARN) -Ilib/include -Iport/host $$opt \
-	    lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c -c; \
-	  mv mdr_f32.o mdr_f64.o mdr_q31.o mdr_status.o $(B)/exact/; \
-	  $$cc -std=c99 $(WARN) -Ilib/include $$opt host_tests/q31_trace.c $(B)/exact/mdr_*.o -o $$out; \
-	  r=$$(./$$out); echo "$$cc $$opt: $$r"; \
-	  if [ "$$r" != "$$ref" ]; then echo "q31 outputs differ from $(Q31_EXPECTED): $$ref"; exit 1; fi; \
-	done; echo "q31-exact: $(words $(EXACT_BUILDS)) builds, outputs identical to $(Q31_EXPECTED)"
-
-# The mutation gate (host_tests/mutate.py, list host_tests/mutations.txt):
-# each deliberate bug of the list applied to a scratch copy of lib/, the
-# fast suites run against it; it fails if one survives (but those shown
-# equivalent). mutate-quick: one mutation per module (in make test).
-PYTHON ?= python3
-mutate: $(B)/host/gen_tip.c
-	$(PYTHON) host_tests/mutate.py --jobs 2
-mutate-quick: $(B)/host/gen_tip.c
-	$(PYTHON) host_tests/mutate.py --quick --jobs 2
-
-# engine step cost against N and against the naive O(N) force sum (one run)
-$(B)/host/bench_engine: host_tests/bench_engine.c host_tests/bench_scene.h $(B)/host/libmdr.a
-	$(HOSTCC) -std=c99 -Wall -Wextra -Werror -Ilib/include -O2 $< $(B)/host/libmdr.a -lm -o $@
-# instructions per step on the emulated Cortex-M4F and M3 (QEMU -icount
-# shift=0; the M3 build runs the step from RAM, as in target-test)
-BENCH_CORE_m4 := Cortex-M4F
-BENCH_CORE_m3 := Cortex-M3
-$(B)/tgt-%/bench_target.elf: host_tests/target/bench_target.c host_tests/bench_scene.h host_tests/bench_matrix.h host_tests/scenes.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
-	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(BENCH_CORE_$*)"' $(BENCH_TGT_$*) $(TGT_TEST_CFLAGS) $< \
-	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
-# the M4F also counts the rows of the benchmark matrix
-BENCH_TGT_m4 := -DBENCH_MATRIX
-# Instructions per tick of every engine, arithmetic, core and cycle
-# (host_tests/target/step_cost.c: QEMU -icount shift=7, exact counts per
-# tick), one CSV line each: engine,arith,core,cycle,mean,max,separated,
-# pinned,moving; written to $(B)/bench/step_cost.csv (make bench runs it).
-STEPCOST_CORE_m4 := m4f
-STEPCOST_CORE_m3 := m3
-$(B)/tgt-%/step_cost.elf: host_tests/target/step_cost.c host_tests/bench_scene.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
-	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(STEPCOST_CORE_$*)"' $(TGT_TEST_CFLAGS) $< \
-	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
-step-cost: $(B)/tgt-m4/step_cost.elf $(B)/tgt-m3/step_cost.elf
-	@mkdir -p $(B)/bench
-	@for c in m4 m3; do port/cortex-m/run-qemu -M $$( [ $$c = m4 ] && echo $(QEMU_m4) || echo $(QEMU_m3) ) -shift 7 \
-	  -t 600 $(B)/tgt-$$c/step_cost.elf > $(B)/bench/step_cost_$$c.log || { cat $(B)/bench/step_cost_$$c.log; exit 1; }; done
-	@{ grep -h '^engine,' $(B)/bench/step_cost_m4.log; grep -hv '^engine,\|^#' $(B)/bench/step_cost_m4.log $(B)/bench/step_cost_m3.log; } \
-	  > $(B)/bench/step_cost.csv
-	@grep -h '^#' $(B)/bench/step_cost_m4.log $(B)/bench/step_cost_m3.log; cat $(B)/bench/step_cost.csv
-# The benchmark matrix (host_tests/bench_matrix.c): time and error on the
-# host, instructions from callgrind (one dump per row, divided by the row's
-# evaluations) and from the M4F run above; CSV, Markdown and the plot are
-# written to host_tests/bench/ (the README shows them).
-BENCH_OUT := host_tests/bench
-$(B)/host/bench_matrix: host_tests/bench_matrix.c host_tests/bench_matrix.h host_tests/scenes.h host_tests/naive_sum.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(REF_SRC) $(B)/host/libmdr.a $(GSL_LIBS) -o $@
-bench: $(B)/host/bench_engine $(B)/host/bench_matrix $(B)/tgt-m4/bench_target.elf $(B)/tgt-m3/bench_target.elf
-	@mkdir -p $(B)/bench $(BENCH_OUT)
-	./$(B)/host/bench_engine
-	port/cortex-m/run-qemu -M $(QEMU_m4) -icount -t 1200 $(B)/tgt-m4/bench_target.elf > $(B)/bench/m4.log || { cat $(B)/bench/m4.log; exit 1; }
-	@grep -v '^M4,' $(B)/bench/m4.log; grep '^M4,' $(B)/bench/m4.log | sed 's/^M4,//' > $(B)/bench/m4.csv
-	port/cortex-m/run-qemu -M $(QEMU_m3) -icount -t 600 $(B)/tgt-m3/bench_target.elf
-	@rm -rf $(B)/bench/cg && mkdir -p $(B)/bench/cg
-	valgrind --tool=callgrind --callgrind-out-file=$(B)/bench/cg/cg.out ./$(B)/host/bench_matrix callgrind 2> $(B)/bench/callgrind.log || { cat $(B)/bench/callgrind.log; exit 1; }
-	@for f in $(B)/bench/cg/cg.out.*; do awk '/^desc: Trigger: Client Request: /{sub(/^desc: Trigger: Client Request: /, ""); n = split($$0, f, ","); key = f[1] "," f[2] "," f[3] "," f[4]; cnt = f[5]} \
-	  /^summary: /{printf "%s,%.1f\n", key, $$2 / cnt}' $$f; done > $(B)/bench/host_instr.csv
-	./$(B)/host/bench_matrix time --host-instr $(B)/bench/host_instr.csv --m4 $(B)/bench/m4.csv \
-	  --csv $(BENCH_OUT)/bench.csv --md $(BENCH_OUT)/bench.md --plot $(B)/bench/plot.dat
-	gnuplot -e "datafile='$(B)/bench/plot.dat'; outfile='$(BENCH_OUT)/bench.png'" host_tests/bench_plot.gp
-	@awk 'FNR == NR { if (/^## Summary/) on = 1; if (/^## Every row/) on = 0; \
-	  if (on) { if (/^## /) { sub(/^## /, ""); $$0 = "**" $$0 "**" } t = t $$0 "\n" } next } \
-	  /<!-- bench:begin/ { print; printf "%s", t; skip = 1; next } /<!-- bench:end/ { skip = 0 } !skip' \
-	  $(BENCH_OUT)/bench.md README.md > $(B)/bench/README.md && cp $(B)/bench/README.md README.md
-	@echo "bench: $(BENCH_OUT)/bench.csv, bench.md, bench.png written; README.md's matrix updated"
-
-demo: $(B)/host/afm_demo
-	./$(B)/host/afm_demo $(B)/demo
-
-# ---- reference vectors ------------------------------------------------------
-$(B)/host/mdr_refgen: ref/mdr_refgen.c $(REF_SRC) ref/mdr_ref.h
-	@mkdir -p $(@D)
-	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(REF_SRC) $(GSL_LIBS) -o $@
-$(B)/host/vecdiff: ref/vecdiff.c
-	$(HOSTCC) $(TEST_CFLAGS) -O2 $< -lm -o $@
-
-ref-check: $(B)/host/mdr_refgen $(B)/host/vecdiff
-	@mkdir -p $(B)/ref
-	./$(B)/host/mdr_refgen critical > $(B)/ref/critical.csv & \
-	./$(B)/host/mdr_refgen curves > $(B)/ref/curves.csv; wait
-	./$(B)/host/vecdiff ref/vectors/critical.csv $(B)/ref/critical.csv
-	./$(B)/host/vecdiff ref/vectors/curves.csv $(B)/ref/curves.csv
-
-$(B)/host/gen_tables: ref/gen_tables.c
-	@mkdir -p $(@D)
-	$(HOSTCC) -O2 $< $(GSL_LIBS) -o $@
-tables: $(B)/host/gen_tables
-	./$(B)/host/gen_tables > lib/src/math/mdr_tables.h
-
-# ---- cross builds -------------------------------------------------------------
-# Per core (flags: port/*/port.mk) the library objects are compiled with
-# -ffreestanding -Werror, -fstack-usage and a call graph; per core and
-# arithmetic port/link_check.c is linked with -nostdlib -lgcc --gc-sections.
-# Checks: no undefined symbol outside the allow-list in lib/ objects, no
-# double-precision helper in any link (all are f32 or q31 programs), no
-# floating-point helper at all in the q31 step (mdr_q31.o).
-include port/cortex-m/port.mk
-include port/riscv/port.mk
-CROSS_WARN := $(MDR_REQUIRED_CFLAGS) -Os $(WARN)
-CORE_m0 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m0) -Iport/cortex-m
-CORE_m4f := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m4f) -Iport/cortex-m
-CORE_m7 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m7) -Iport/cortex-m
-CORE_rv32imac := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imac) -Iport/riscv
-CORE_rv32imafc := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imafc) -Iport/riscv
-CROSS_CORES := m0 m4f m7 rv32imac rv32imafc
-# core-arithmetic: Cortex-M0 runs q31, the M7 f32, the M4F and RV32 both
-# (m4f-f32nostress: the f32 program without the stress functions)
-# (m4f-scene: the minimal scene from the default build, --gc-sections
-# only; m4f-full: every public function of f32, q31 and the scenes)
-CROSS_CFGS := m0-q31 m4f-f32 m4f-f32nostress m4f-q31 m4f-scene m4f-full m7-f32 rv32imac-f32 rv32imac-q31 rv32imafc-f32 rv32imafc-q31
-LC_f32 := -DMDR_LC_F32 -DMDR_LC_STRESS
-LC_f32nostress := -DMDR_LC_F32
-LC_q31 := -DMDR_LC_Q31
-LC_scene := -DMDR_LC_SCENE
-LC_full := -DMDR_LC_F32 -DMDR_LC_STRESS -DMDR_LC_Q31 -DMDR_LC_SCENE_ALL
-# Programs built with a user configuration (port/configs/<cfg>/mdr_config.h,
-# -DMDR_USE_CONFIG), library and program in one link:
-#   m4f-scenecfg  the minimal scene with port/configs/minimal-scene
-#   m4f-scenelto  the same, compiled and linked with -flto
-#   m0-q31min     the minimal q31 scene on the Cortex-M0: a const q31 table
-#                 made by the CLI, float init, integer step
-#                 (port/configs/minimal-q31)
-CROSS_SPECIAL := m4f-scenecfg m4f-scenelto m0-q31min
-CFG_minscene := -DMDR_USE_CONFIG -Iport/configs/minimal-scene
-CFG_minq31 := -DMDR_USE_CONFIG -Iport/configs/minimal-q31
-LC_LINK := -Ilib/include -nostdlib -Wl,--gc-sections -Wl,-e,link_check_entry port/link_check.c
-LTO_scenecfg :=
-LTO_scenelto := -flto
-$(B)/m4f-scenecfg/link_check.elf $(B)/m4f-scenelto/link_check.elf: $(B)/m4f-%/link_check.elf: \
-  $(LIB_DEPS) port/link_check.c port/configs/minimal-scene/mdr_config.h
-	@mkdir -p $(@D)
-	$(CORE_m4f) $(CROSS_WARN) $(LTO_$*) $(CFG_minscene) -DMDR_LC_SCENE $(LC_LINK) lib/src/mdr_f32.c lib/src/mdr_status.c -lgcc -o $@
-$(B)/host/min_q31.c: $(B)/host/mdr
-	./$(B)/host/mdr table --arith q31 --profile paraboloid --R 2e-3 --springs 64 --a-max 2e-4 --name min_q31 > $@
-$(B)/m0-q31min/link_check.elf: $(LIB_DEPS) port/link_check.c port/configs/minimal-q31/mdr_config.h $(B)/host/min_q31.c
-	@mkdir -p $(@D)
-	$(CORE_m0) $(CROSS_WARN) $(CFG_minq31) -DMDR_LC_Q31MIN $(LC_LINK) $(B)/host/min_q31.c \
-	  lib/src/mdr_f32.c lib/src/mdr_q31.c lib/src/mdr_status.c -lgcc -o $@
-# the tools of a core (binutils prefix)
-xtool = $(if $(filter rv%,$(1)),$(MDR_RV_PREFIX),$(MDR_CM_PREFIX))$(2)
-# undefined symbols allowed in lib/ objects: the two mem* functions GCC may
-# call, and libgcc helpers (checked separately for double precision)
-ALLOW_RE := ^(memcpy|memset|__aeabi_[a-z0-9]+|__gnu_thumb1_case_[a-z0-9]+|__[a-z]+sf[0-9]|__float(un)?sisf|__fix(uns)?sfsi|__[a-z]+[sd]i[0-9]|__clz[sd]i2)$$
-# any floating-point helper (soft float, single or double): none may appear
-# in the q31 step (lib/src/mdr_q31.c), which is integer arithmetic only
-FLOAT_RE := ^(__aeabi_([fd][a-z0-9]+|[a-z0-9]*2[fd][a-z]*)|__[a-z]+[sd]f[0-9]?|__[a-z]+[sd]f[a-z0-9]*)$$
-DOUBLE_RE := ^(__aeabi_(d[a-z0-9]+|[a-z0-9]*2d[a-z]*)|__[a-z]+df[0-9]?|__[a-z]+df[a-z0-9]*)$$
-CROSS_OBJS := mdr_f32 mdr_q31 mdr_status
-
-define core_rules
-$(B)/$(1)/libmdr.a: $(LIB_DEPS) port/sizes.c
-	@mkdir -p $(B)/$(1)
-	cd $(B)/$(1) && for o in $(CROSS_OBJS); do \
-	  $(CORE_$(1)) $(CROSS_WARN) -fstack-usage -fcallgraph-info=su -I$(CURDIR)/lib/include \
-	    $(subst -Iport,-I$(CURDIR)/port,$(filter -Iport%,$(CORE_$(1)))) -c $(CURDIR)/lib/src/$$$$o.c -o $$$$o.o || exit 1; done
-	$(CORE_$(1)) $(CROSS_WARN) -Ilib/include -c port/sizes.c -o $(B)/$(1)/sizes.o
-	rm -f $$@ && $(call xtool,$(1),ar) rcs $$@ $(addprefix $(B)/$(1)/,$(addsuffix .o,$(CROSS_OBJS)))
-endef
-define link_rules
-$(B)/$(1)/link_check.elf: $(B)/$(word 1,$(subst -, ,$(1)))/libmdr.a port/link_check.c
-	@mkdir -p $(B)/$(1)
-	$(CORE_$(word 1,$(subst -, ,$(1)))) $(CROSS_WARN) $(LC_$(word 2,$(subst -, ,$(1)))) -Ilib/include \
-	  -nostdlib -Wl,--gc-sections -Wl,-e,link_check_entry port/link_check.c $$< -lgcc -o $$@
-endef
-$(foreach c,$(CROSS_CORES),$(eval $(call core_rules,$(c))))
-$(foreach c,$(CROSS_CFGS),$(eval $(call link_rules,$(c))))
-
-cross: $(foreach c,$(CROSS_CFGS) $(CROSS_SPECIAL),$(B)/$(c)/link_check.elf)
-	@set -e; $(foreach k,$(CROSS_CORES),k=$(k); nm=$(call xtool,$(k),nm); \
-	  und=$$($$nm -u $(B)/$$k/mdr_f32.o $(B)/$$k/mdr_q31.o $(B)/$$k/mdr_status.o | awk 'NF==2{print $$2}' | sort -u); \
-	  bad=$$(printf '%s\n' $$und | grep -Ev '$(ALLOW_RE)' | grep -v '^$$' || true); \
-	  if [ -n "$$bad" ]; then echo "cross $$k: undefined symbols outside the allow-list: $$bad"; exit 1; fi; \
-	  qf=$$($$nm -u $(B)/$$k/mdr_q31.o | awk 'NF==2{print $$2}' | grep -E '$(FLOAT_RE)' || true); \
-	  if [ -n "$$qf" ]; then echo "cross $$k: float helpers in the q31 step: $$qf"; exit 1; fi; \
-	  echo "cross $$k: lib/ ok (undefined: $$(printf '%s ' $$und); q31 step: $$($$nm -u $(B)/$$k/mdr_q31.o | awk 'NF==2{printf "%s ", $$2}'))";) \
-	$(foreach c,$(CROSS_CFGS) $(CROSS_SPECIAL),c=$(c); nm=$(call xtool,$(c),nm); \
-	  dbl=$$($$nm $(B)/$$c/link_check.elf | awk '{print $$NF}' | grep -E '$(DOUBLE_RE)' || true); \
-	  if [ -n "$$dbl" ]; then echo "cross $$c: double-precision helpers: $$dbl"; exit 1; fi; \
-	  echo "cross $$c: linked with -nostdlib -lgcc, no double helper";)
-
-# Flash (text + data) of each core-arithmetic program after --gc-sections,
-# lib/'s own static RAM (data + bss of its objects), the instance sizes on
-# the core, and the worst stack depth of the step functions from the call
-# graph (port/stack_depth.awk; libgcc helpers listed, not counted).
-SIZE_DESC_f32 := all profiles, closed forms, critical states, stress, tables, engine
-SIZE_DESC_f32nostress := the same without the stress functions
-SIZE_DESC_q31 := all profiles: table from a profile, q31 conversion, float init, q31 steps
-SIZE_DESC_scene := minimal scene (paraboloid, f32, force only, table-free), default build
-SIZE_DESC_full := full library: every public function of f32, q31 and the scenes
-SIZE_DESC_scenecfg := minimal scene with port/configs/minimal-scene/mdr_config.h
-SIZE_DESC_scenelto := the same, -flto
-SIZE_DESC_q31min := minimal q31 scene: const 64-spring table (1.3 KB), float init, q31 step; port/configs/minimal-q31
-size: cross
-	@printf '%-16s %7s %7s   %s\n' config flash "lib RAM" "program (port/link_check.c, --gc-sections)"
-	@$(foreach c,$(CROSS_CFGS) $(CROSS_SPECIAL),c=$(c); k=$${c%%-*}; sz=$(call xtool,$(c),size); \
-	  ram=$$($$sz $(B)/$$k/libmdr.a | awk 'NR>1{s+=$$2+$$3} END{print s}'); \
-	  $$sz $(B)/$$c/link_check.elf | awk -v c=$$c -v r=$$ram -v d='$(SIZE_DESC_$(word 2,$(subst -, ,$(c))))' \
-	    'NR>1{printf "%-16s %7d %7d   %s\n",c,$$1+$$2,r,d}';)
-	@echo; printf '%-10s %s\n' core "instance sizes in bytes (sizeof on the core)"
-	@$(foreach k,$(CROSS_CORES),k=$(k); nm=$(call xtool,$(k),nm); \
-	  $$nm -S $(B)/$$k/sizes.o | awk -v k=$$k 'function hex(h, i, v) { v = 0; for (i = 1; i <= length(h); i++) v = 16 * v + index("0123456789abcdef", substr(h, i, 1)) - 1; return v } \
-	    {n=$$4; sub(/^mdr_sizeof_/,"",n); s=s sprintf(" %s %d", n, hex($$2))} END{printf "%-10s%s\n", k, s}';)
-	@echo; echo "worst stack depth of a step function (d, F or z), bytes: call graph of -fstack-usage, libgcc helpers not counted"
-	@for k in $(CROSS_CORES); do for a in f32 q31; do \
-	  awk -v roots="^mdr_engine_step_[dFz]_$$a\$$" -f port/stack_depth.awk $(B)/$$k/*.ci | sort -k2 -n | tail -1 | \
-	    awk -v k=$$k -v a=$$a '{ext = $$0; if (!sub(/^.*\[\+ /, "", ext)) ext = ""; sub(/ \]$$/, "", ext); \
-	      n = split(ext, x, " "); printf "%-10s %s %5d   %s%s\n", k, a, $$2, $$3, (n ? sprintf("  + %d libgcc/mem helpers", n) : "")}'; \
-	 done; done
-
-# ---- target tests: the host suite's target-independent core on QEMU ----------
-# Built per core with its port (port/cortex-m: startup, board linker
-# scripts, semihosting, newlib; port/riscv: the same with picolibc) and run
-# by the port's run-qemu:
-#   m4        Cortex-M4F, mps2-an386: the unit tests, the library against
-#             the committed ref/ vectors (read from ref/vectors through
-#             semihosting), the engine tests, the q31 tests and trace
-#   m7        Cortex-M7, mps2-an500: the same
-#   m3        Cortex-M3 (no FPU), mps2-an385: the q31 tests and trace, the
-#             step placed in RAM (MDR_STEP_SECTION=".ramfunc")
-#   m0        Cortex-M0, microbit (nRF51, 16 KB RAM): the q31 tests on
-#             128-spring tables and the trace with its q31 tables const in
-#             flash (`q31_trace --tables`, as a firmware with little RAM
-#             does); the program reports the RAM it used (painted stack)
-#   rv32imac, rv32imafc  RV32, virt: the q31 tests and trace
-# q31_trace must print the committed fingerprint ($(Q31_EXPECTED), the
-# host's) on every core: the q31 step is bit-exact across cores. Each test
-# prints the same cmocka lines as on the host (host_tests/target/cmocka.h).
-# TARGET_TEST=full also runs the unit, vector and engine tests on the M3 and
-# both RV32 cores (minutes more; not in make test). The vector test's f32
-# rows must equal the host's bit for bit; on a core without an FPU square
-# root (M3, RV32IMAC: lib/'s own routine) those of the host built with
-# MDR_PORT_OWN_SQRT, whose CLI also makes that core's generated table for
-# the engine test.
-TGT_CORES := m4 m7 m3 m0 rv32imac rv32imafc
-TGT_m4 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m4f) -Iport/cortex-m
-TGT_m7 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m7) -Iport/cortex-m
-TGT_m3 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m3) -Iport/cortex-m -DMDR_STEP_SECTION='".ramfunc"'
-TGT_m0 := $(MDR_CM_PREFIX)gcc $(MDR_CM_FLAGS_m0) -Iport/cortex-m
-TGT_rv32imac := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imac) $(MDR_RV_LIBC) -Iport/riscv
-TGT_rv32imafc := $(MDR_RV_PREFIX)gcc $(MDR_RV_FLAGS_rv32imafc) $(MDR_RV_LIBC) -Iport/riscv
-QEMU_m4 := mps2-an386
-QEMU_m7 := mps2-an500
-QEMU_m3 := mps2-an385
-QEMU_m0 := microbit
-QEMU_rv32imac := virt
-QEMU_rv32imafc := virt
-TGT_NAME_m4 := Cortex-M4F $(QEMU_m4)
-TGT_NAME_m7 := Cortex-M7 $(QEMU_m7)
-TGT_NAME_m3 := Cortex-M3 $(QEMU_m3)
-TGT_NAME_m0 := Cortex-M0 $(QEMU_m0)
-TGT_NAME_rv32imac := RV32IMAC virt
-TGT_NAME_rv32imafc := RV32IMAFC virt
-TGT_TESTS_m4 := test_vectors test_engine test_unit test_q31 q31_trace
-TGT_TESTS_m7 := $(TGT_TESTS_m4)
-TGT_TESTS_m3 := test_q31 q31_trace
-TGT_TESTS_m0 := test_q31 q31_trace
-TGT_TESTS_rv32imac := test_q31 q31_trace
-TGT_TESTS_rv32imafc := test_q31 q31_trace
-ifeq ($(TARGET_TEST),full)
-$(foreach t,m3 rv32imac rv32imafc,$(eval TGT_TESTS_$(t) := test_vectors test_engine test_unit $(TGT_TESTS_$(t))))
-endif
-# cores without an FPU square root: the host reference built with lib/'s own
-TGT_OWNSQRT := m3 rv32imac
-tgt_ref = $(B)/$(if $(filter $(1),$(TGT_OWNSQRT)),ownsqrt/)host
-# the test programs' extra flags and inputs per core
-TGT_TFLAGS_m0 := -DNSPR=128 -DQ31_TRACE_TABLES -I$(B)/host -DMDR_RAM_REPORT
-TGT_TDEPS_m0 := $(B)/host/q31_trace_tables.h
-# startup, linker script and libc per port; the runner
-TGT_START_cm := $(MDR_CM_STARTUP) $(wildcard port/cortex-m/*.ld) port/target.h
-TGT_START_rv := $(MDR_RV_STARTUP) $(MDR_RV_LDSCRIPT) port/target.h
-tgt_port = $(if $(filter rv%,$(1)),rv,cm)
-TGT_LD_m0 := $(call mdr_cm_ldflags,port/cortex-m/microbit.ld)
-tgt_ld = $(or $(TGT_LD_$(1)),$(if $(filter rv%,$(1)),$(MDR_RV_LDFLAGS),$(MDR_CM_LDFLAGS)))
-tgt_run = $(if $(filter rv%,$(1)),port/riscv/run-qemu,port/cortex-m/run-qemu -M $(QEMU_$(1)))
-TGT_TEST_CFLAGS := -std=c99 -D_GNU_SOURCE -DMDR_TARGET_TEST -O2 -Wall -Wextra -Werror \
-                   -Ihost_tests/target -Ilib/include -Iref
-TGT_LIB_OBJS := mdr_f32 mdr_f64 mdr_q31 mdr_status
-
-define target_rules
-$(B)/tgt-$(1)/libmdr.a: $(LIB_DEPS)
-	@mkdir -p $(B)/tgt-$(1)
-	for o in $(TGT_LIB_OBJS); do $(TGT_$(1)) $(MDR_REQUIRED_CFLAGS) -O2 $(WARN) -Ilib/include \
-	  -c lib/src/$$$$o.c -o $(B)/tgt-$(1)/$$$$o.o || exit 1; done
-	rm -f $$@ && $(call xtool,$(1),ar) rcs $$@ $(addprefix $(B)/tgt-$(1)/,$(addsuffix .o,$(TGT_LIB_OBJS)))
-$(B)/tgt-$(1)/%.elf: host_tests/%.c $(B)/tgt-$(1)/libmdr.a host_tests/target/cmocka.h \
-  $(TGT_START_$(call tgt_port,$(1))) $(TGT_TDEPS_$(1))
-	$(TGT_$(1)) $(TGT_TEST_CFLAGS) $(TGT_TFLAGS_$(1)) $$< $$(if $$(filter test_engine,$$*),$(call tgt_ref,$(1))/gen_tip.c) \
-	  $(filter %.c,$(TGT_START_$(call tgt_port,$(1)))) $(B)/tgt-$(1)/libmdr.a $(call tgt_ld,$(1)) -lm -o $$@
-$(B)/tgt-$(1)/test_engine.elf: $(call tgt_ref,$(1))/gen_tip.c
-$(B)/tgt-$(1)/test_vectors.run: $(call tgt_ref,$(1))/test_vectors
-$(B)/tgt-$(1)/q31_trace.run: $(Q31_EXPECTED)
-# one QEMU run: its output in .log, a .run stamp when it passed
-$(B)/tgt-$(1)/%.run: $(B)/tgt-$(1)/%.elf $(B)/host/q31_trace
-	@rm -f $$@; t0=$$$$(date +%s%N); $(call tgt_run,$(1)) -t 600 $$< > $(B)/tgt-$(1)/$$*.log 2>&1 || \
-	  { cat $(B)/tgt-$(1)/$$*.log; echo "target $(TGT_NAME_$(1)): $$* failed"; exit 1; }; \
-	  d=$$$$((($$$$(date +%s%N) - t0) / 100000000)); echo "(wall $$$$((d / 10)).$$$$((d % 10)) s)" > $(B)/tgt-$(1)/$$*.time
-	@if [ $$* = q31_trace ]; then \
-	  grep -v '^target RAM ' $(B)/tgt-$(1)/q31_trace.log | cmp -s $(Q31_EXPECTED) - || \
-	    { echo "target $(TGT_NAME_$(1)): q31 outputs differ from $(Q31_EXPECTED) (the host's)"; \
-	      cat $(Q31_EXPECTED) $(B)/tgt-$(1)/q31_trace.log; exit 1; }; \
-	  echo "q31 outputs identical to the host's ($(Q31_EXPECTED))" >> $(B)/tgt-$(1)/q31_trace.log; fi
-	@if [ $$* = test_vectors ]; then \
-	  ./$(call tgt_ref,$(1))/test_vectors 2>/dev/null | grep ' f32 ' > $(B)/tgt-$(1)/f32.host; \
-	  grep ' f32 ' $(B)/tgt-$(1)/test_vectors.log | diff $(B)/tgt-$(1)/f32.host - || \
-	    { echo "target $(TGT_NAME_$(1)): f32 errors differ from the host's ($(call tgt_ref,$(1)))"; exit 1; }; \
-	  echo "f32 rows identical to the host's$(if $(filter $(1),$(TGT_OWNSQRT)), with lib/'s own sqrt,) (f32 results bit for bit)" \
-	    >> $(B)/tgt-$(1)/test_vectors.log; fi
-	@touch $$@
-endef
-$(foreach t,$(TGT_CORES),$(eval $(call target_rules,$(t))))
-
-$(B)/host/q31_trace: host_tests/q31_trace.c $(B)/host/libmdr.a
-	$(HOSTCC) -std=c99 $(WARN) -Ilib/include -O2 $< $(B)/host/libmdr.a -o $@
-# the trace's q31 tables as const C, for the Cortex-M0
-$(B)/host/q31_trace_tables.h: $(B)/host/q31_trace
-	./$< --tables > $@
-# the host references of the cores without an FPU square root: the host
-# rules again, in build/ownsqrt/ with -DMDR_PORT_OWN_SQRT
-$(B)/ownsqrt/host/gen_tip.c $(B)/ownsqrt/host/test_vectors: $(LIB_SRC) $(LIB_DEPS) examples/mdr_cli.c \
-  examples/mdr_cli_t.h host_tests/test_vectors.c host_tests/fl.h
-	$(MAKE) --no-print-directory B=$(B)/ownsqrt CFLAGS='$(CFLAGS) -DMDR_PORT_OWN_SQRT' $@
-
-# keep the programs (intermediate files of the .run rules) for nm and reruns
-.PRECIOUS: $(foreach t,$(TGT_CORES),$(B)/tgt-$(t)/%.elf)
-TGT_RUNS := $(foreach t,$(TGT_CORES),$(addprefix $(B)/tgt-$(t)/,$(addsuffix .run,$(TGT_TESTS_$(t)))))
-target-test:
-	@rm -f $(TGT_RUNS)
-	@$(MAKE) --no-print-directory -j2 $(TGT_RUNS) || { echo "target-test: failed"; exit 1; }
-	@$(foreach t,$(TGT_CORES),$(foreach x,$(TGT_TESTS_$(t)),\
-	  echo "== target $(TGT_NAME_$(t)): $(x) $$(cat $(B)/tgt-$(t)/$(x).time)"; cat $(B)/tgt-$(t)/$(x).log;))
-	@a=$$($(MDR_CM_PREFIX)nm $(B)/tgt-m3/q31_trace.elf | awk '$$3=="mdr_engine_step_d_q31"{print $$1}'); \
-	  case $$a in 2*) echo "target mps2-an385: the q31 step ran from RAM (MDR_STEP_SECTION, at 0x$$a)";; \
-	  *) echo "target mps2-an385: MDR_STEP_SECTION did not place the step in RAM (0x$$a)"; exit 1;; esac
-
-# ---- static analysis ----------------------------------------------------------
-# cppcheck and clang-tidy over the code that ships: lib/ (built for the host,
-# the Cortex-M4F and RV32IMAC ports), port/, examples/ and ref/. Configuration:
-# .clang-tidy (checks and why some are off) and .cppcheck-suppressions (what
-# cppcheck is told to ignore, each with its reason); every finding fails.
-LINT_LIB := lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c
-LINT_HOST := examples/mdr_cli.c examples/afm_demo.c ref/mdr_ref.c ref/mdr_refgen.c ref/vecdiff.c \
-             ref/gen_tables.c port/link_check.c port/sizes.c
-LINT_CM := port/cortex-m/semihost.c port/cortex-m/startup.c port/semihost.c
-LINT_RV := port/riscv/semihost.c port/riscv/startup.c
-LINT_LC := -DMDR_LC_F32 -DMDR_LC_STRESS -DMDR_LC_Q31 -DMDR_LC_SCENE -DMDR_LC_SCENE_ALL -DMDR_LC_Q31MIN
-LINT_ARM := --target=arm-none-eabi $(MDR_CM_FLAGS_m4f) -isystem /usr/lib/arm-none-eabi/include
-# clang-tidy: one stamp per configuration and file (runs under make -j2)
-LINT_CFG_host := $(MDR_REQUIRED_CFLAGS) -Ilib/include -Iport/host
-LINT_CFG_m4f := $(MDR_REQUIRED_CFLAGS) $(LINT_ARM) -Ilib/include -Iport/cortex-m
-LINT_CFG_rv32 := $(MDR_REQUIRED_CFLAGS) --target=riscv32-unknown-elf -march=rv32imac -mabi=ilp32 \
-                 -Ilib/include -Iport/riscv
-LINT_CFG_app := -std=c99 -D_GNU_SOURCE $(LINT_LC) -Ilib/include -Iport/host -Iref
-LINT_CFG_cm := -std=c99 -ffreestanding $(LINT_ARM) -DMDR_RAM_REPORT -Ilib/include -Iport/cortex-m
-LINT_CFG_rv := -std=c99 -ffreestanding --target=riscv32-unknown-elf -march=rv32imafc -mabi=ilp32f \
-               -isystem /usr/lib/picolibc/riscv64-unknown-elf/include -Ilib/include -Iport/riscv
-LINT_UNITS := $(foreach c,host m4f rv32,$(addprefix $(c):,$(LINT_LIB))) \
-              $(addprefix app:,$(LINT_HOST)) $(addprefix cm:,$(LINT_CM)) $(addprefix rv:,$(LINT_RV))
-lint_stamp = $(B)/lint/$(word 1,$(subst :, ,$(1)))/$(subst /,_,$(word 2,$(subst :, ,$(1)))).tidy
-define lint_rule
-$(call lint_stamp,$(1)): $(word 2,$(subst :, ,$(1))) .clang-tidy $(LIB_DEPS) $(wildcard examples/*.h ref/*.h)
-	@mkdir -p $$(@D)
-	@clang-tidy --quiet $$< -- $(LINT_CFG_$(word 1,$(subst :, ,$(1)))) > $$@.log 2>&1 || { cat $$@.log; exit 1; }
-	@echo "clang-tidy $(1): clean" && touch $$@
-endef
-$(foreach u,$(LINT_UNITS),$(eval $(call lint_rule,$(u))))
-CPPCHECK := cppcheck --std=c99 --enable=warning,style,performance,portability --inline-suppr \
-            --suppressions-list=.cppcheck-suppressions --error-exitcode=1 -q
-$(B)/lint/cppcheck.stamp: $(LINT_LIB) $(LINT_HOST) $(LINT_CM) $(LINT_RV) .cppcheck-suppressions $(LIB_DEPS) $(wildcard examples/*.h ref/*.h)
-	@mkdir -p $(@D)
-	$(CPPCHECK) -j2 -Ilib/include -Iport/host $(LINT_LIB)
-	$(CPPCHECK) -D_GNU_SOURCE $(LINT_LC) -Ilib/include -Iport/host -Iref $(LINT_HOST)
-	$(CPPCHECK) -DMDR_RAM_REPORT -Ilib/include -Iport/cortex-m $(LINT_CM)
-	$(CPPCHECK) -Ilib/include -Iport/riscv $(LINT_RV)
-	@echo "cppcheck: clean" && touch $@
-lint: $(B)/lint/cppcheck.stamp $(foreach u,$(LINT_UNITS),$(call lint_stamp,$(u)))
-	@echo "lint: cppcheck and clang-tidy clean ($(words $(LINT_UNITS)) clang-tidy units)"
-
-# ---- dependencies --------------------------------------------------------------
-DEB_PKGS := gcc clang libclang-rt-14-dev make libcmocka-dev libgsl-dev gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
-            qemu-system-arm qemu-system-misc picolibc-riscv64-unknown-elf cppcheck clang-tidy \
-            python3-cffi python3-numpy python3-pytest python3-matplotlib python3-setuptools python3-dev
 deps:
-	@missing=""; \
-	for p in $(DEB_PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
-	if [ -n "$$missing" ]; then \
-	  if [ "$$(id -u)" = 0 ]; then \
-	    echo "installing:$$missing"; \
-	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
-	  else echo "missing Debian packages:$$missing (run: sudo apt-get install$$missing)"; exit 1; fi; \
-	fi
+	@sh mk/deps.sh
+deps-check:
+	@sh mk/deps.sh --check
 
 clean:
 	rm -rf $(B)
 
+include mk/tests.mk
+include mk/critical.mk
+include mk/fuzz.mk
+include mk/bench.mk
+include mk/ref.mk
+include mk/cross.mk
+include mk/target.mk
+include mk/lint.mk
 include mk/python.mk
 include mk/fit.mk
+include mk/docs.mk
+include mk/install.mk
+include mk/demo.mk

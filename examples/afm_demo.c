@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * afm_demo.c: an AFM pull-off scene with libmdr (f32, as on the target).
  *
@@ -6,8 +7,8 @@
  * fixed grips and through the cantilever (k_m = 0.2 N/m), for the exact
  * sphere and its paraboloid (JKR) approximation, beside the JKR closed forms
  * -1.5 pi w R and -(5/6) pi w R. Writes the retraction branch F(d) of both
- * substrates as CSV to OUTDIR/afm_fd.csv and, when gnuplot is installed,
- * a plot OUTDIR/afm_fd.png (normalised: F/(pi w R) against d/(pi^2 w^2 R/E*^2)^(1/3)).
+ * substrates as CSV to OUTDIR/afm_fd.csv (SI, and normalised: F/(pi w R)
+ * against d/(pi^2 w^2 R/E*^2)^(1/3)).
  *
  * Then the real-time part, as firmware would run it: a force-spectroscopy
  * cycle through the cantilever with the spring engine (512 springs of the
@@ -15,11 +16,17 @@
  * the force reaches a 2 nN trigger, then retracts until the tip is free.
  * Prints the jump-in, the trigger, the pull-off (beside mdr_critical's
  * cantilever value) and the energy dissipated in the cycle; writes every
- * tick to OUTDIR/afm_cycle.csv.
+ * tick to OUTDIR/afm_cycle.csv (phase: approach or retract).
+ *
+ * The states to mark on plots go to OUTDIR/afm_marks.csv, one per line:
+ * substrate, mark, x, F_before, F_after (SI): the fixed-load pull-off of the
+ * equilibrium curve (x = d), the JKR closed form -1.5 pi w R (x = 0), and
+ * the cycle's jump-in and pull-off (x = z; the force before and after the
+ * jump). make demo plots them (examples/afm_demo.gp, gnuplot).
  *
  * Usage: afm_demo [OUTDIR]   (default build/demo)
  */
-/* POSIX: mkdir, popen (a feature-test macro: reserved by design) */
+/* POSIX: mkdir (a feature-test macro: reserved by design) */
 #define _POSIX_C_SOURCE 200809L /* NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp) */
 #include <errno.h>
 #include <math.h>
@@ -102,46 +109,15 @@ static int make_dirs(const char *path)
     return 0;
 }
 
-/* The F-d plot of afm_fd.csv as OUTDIR/afm_fd.png, if gnuplot is there. The
- * shell sees fixed command strings only; the paths go to gnuplot's stdin. */
-static void plot_fd(const char *outdir, const char *csv_path)
-{
-    FILE *gp;
-    if (system("command -v gnuplot >/dev/null 2>&1") != 0) { /* NOLINT(cert-env33-c): fixed string */
-        printf("plot: install gnuplot for a PNG\n");
-        return;
-    }
-    gp = popen("gnuplot 2>/dev/null", "w"); /* NOLINT(cert-env33-c): fixed string */
-    if (gp == NULL) {
-        printf("plot: cannot start gnuplot; CSV written\n");
-        return;
-    }
-    fprintf(gp,
-            "set terminal pngcairo size 800,560 noenhanced\n"
-            "set output '%s/afm_fd.png'\n"
-            "set datafile separator ','\nset key bottom right\nset grid\n"
-            "set xlabel 'd / (pi^2 w^2 R / E*^2)^(1/3)'\nset ylabel 'F / (pi w R)'\n"
-            "set title 'Si3N4 tip R = 20 nm, exact sphere (libmdr f32)'\n"
-            "plot '%s' using (strcol(1) eq 'PDMS' ? $5 : 1/0):6 with lines lw 2 title 'PDMS', \\\n"
-            "  '' using (strcol(1) eq 'polystyrene' ? $5 : 1/0):6 with lines lw 2 title 'polystyrene', \\\n"
-            "  -1.5 with lines dt 2 title 'JKR -1.5'\n",
-            outdir, csv_path);
-    if (pclose(gp) == 0) {
-        printf("plot: %s/afm_fd.png\n", outdir);
-    } else {
-        printf("plot: gnuplot failed (no pngcairo terminal?); CSV written\n");
-    }
-}
-
 /* One force-spectroscopy cycle per substrate with the real-time engine. */
-static int engine_cycles(const char *outdir)
+static int engine_cycles(const char *outdir, FILE *marks)
 {
     static mdr_node_f32 nodes[MDR_TABLE_NODES(512)];
     const float triggers[2] = {1e-9f, 5e-9f}, dz = 0.01e-9f;
     char path[512];
     FILE *csv;
     int i;
-    csv = open_csv(outdir, "afm_cycle.csv", "substrate,tick,z,d,F,a,event", path, sizeof path);
+    csv = open_csv(outdir, "afm_cycle.csv", "substrate,tick,z,d,F,a,event,phase", path, sizeof path);
     if (csv == NULL) {
         return 1;
     }
@@ -174,8 +150,12 @@ static int engine_cycles(const char *outdir)
                 (void)fclose(csv);
                 return 1;
             }
-            fprintf(csv, "%s,%ld,%.9g,%.9g,%.9g,%.9g,%s\n", s->name, tick, (double)o.z, (double)o.d,
-                    (double)o.F, (double)o.a, mdr_event_str(o.event));
+            fprintf(csv, "%s,%ld,%.9g,%.9g,%.9g,%.9g,%s,%s\n", s->name, tick, (double)o.z, (double)o.d,
+                    (double)o.F, (double)o.a, mdr_event_str(o.event), retract ? "retract" : "approach");
+            if (o.event == MDR_EV_JUMP_IN || o.event == MDR_EV_PULL_OFF) {
+                fprintf(marks, "%s,%s,%.9g,%.9g,%.9g\n", s->name, mdr_event_str(o.event), (double)o.z,
+                        (double)o.F0, (double)o.F);
+            }
             if (o.event != MDR_EV_NONE) {
                 printf("  tick %7ld  %-10s z = %8.3f nm: F %8.4f -> %8.4f nN, d %8.4f -> %8.4f nm, "
                        "a %6.3f -> %6.3f nm\n", tick, mdr_event_str(o.event), (double)z * 1e9,
@@ -212,8 +192,9 @@ int main(int argc, char **argv)
     static const char *ctl_name[4] = {"", "fixed load", "fixed grips", "cantilever"};
     const char *outdir = argc > 1 ? argv[1] : "build/demo";
     char path[512];
-    FILE *csv;
-    int i;
+    char marks_path[512];
+    FILE *csv, *marks;
+    int i, rc;
 
     if (make_dirs(outdir) != 0) {
         return 1;
@@ -259,9 +240,15 @@ int main(int argc, char **argv)
         printf("%-12s E* = %.4g Pa, w = %.3g J/m^2\n\n", "", e_star(s), s->w);
     }
 
+    marks = open_csv(outdir, "afm_marks.csv", "substrate,mark,x,F_before,F_after", marks_path,
+                     sizeof marks_path);
+    if (marks == NULL) {
+        return 1;
+    }
     /* equilibrium curve of the exact sphere, both substrates, normalised */
     csv = open_csv(outdir, "afm_fd.csv", "substrate,a,d,F,d_norm,F_norm", path, sizeof path);
     if (csv == NULL) {
+        (void)fclose(marks);
         return 1;
     }
     for (i = 0; i < 2; i++) {
@@ -276,12 +263,17 @@ int main(int argc, char **argv)
             mdr_default_start_f32(&c, &a0) != MDR_OK) {
             fprintf(stderr, "afm_demo: init failed\n");
             (void)fclose(csv);
+            (void)fclose(marks);
             return 1;
         }
         /* up to 2.5 a_c (fixed load), inside the sphere */
         if (mdr_critical_f32(&c, MDR_CONTROL_LOAD, 0.0f, a0, &o) == MDR_OK) {
             a0 = fminf(2.5f * o.a, 0.95f * (float)R_TIP);
+            fprintf(marks, "%s,fixed-load pull-off,%.9g,%.9g,%.9g\n", s->name, (double)o.d, (double)o.F,
+                    (double)o.F);
         }
+        fprintf(marks, "%s,JKR -1.5 pi w R,0,%.9g,%.9g\n", s->name, -1.5 * PI * s->w * R_TIP,
+                -1.5 * PI * s->w * R_TIP);
         for (j = 1; j <= 400; j++) {
             float a = a0 * (float)j / 400.0f;
             mdr_eqstate_f32 e;
@@ -292,9 +284,14 @@ int main(int argc, char **argv)
         }
     }
     if (close_csv(csv, path) != 0) {
+        (void)fclose(marks);
         return 1;
     }
     printf("equilibrium F-d curves (exact sphere): %s\n", path);
-    plot_fd(outdir, path);
-    return engine_cycles(outdir);
+    rc = engine_cycles(outdir, marks);
+    if (close_csv(marks, marks_path) != 0) {
+        return 1;
+    }
+    printf("states to mark: %s\n", marks_path);
+    return rc;
 }

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Pull-off of a worn AFM tip, from its sampled profile, through the spring
 engine: an approach-retract cycle of a cantilever, plotted.
 

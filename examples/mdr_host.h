@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_host.h: host-side helpers shared by the mdr CLI (examples/mdr_cli.c)
  * and the Python package (python/src/mdr_py.c), so that both drive the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_host_t.h: the per-arithmetic host helpers shared by the mdr CLI and
  * the Python package (see mdr_host.h). Not a header to include directly:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * applies.h: which configurations a test suite applies to. A suite that
  * needs parts of the library a configuration removes (build matrix, make

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_engine.c: cost per step of the spring engine against the number of
  * springs N (make bench). All figures come from one run, so they can be

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_fit.c: the cost of fitting force curves (lib/include/mdr_fit.h), in
  * one run: curves per second per core for 1 000-point retract curves of a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # bench_fit_map.sh: `mdr fit --map` on N curves (the spring engine's
 # approach-retract cycles of the benchmark's scene, 1 000 retract points
 # each, noise 1 % of the pull-off force, z and F offsets per curve), wall

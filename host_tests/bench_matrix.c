@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_matrix.c: run time against error for every scene, method,
  * arithmetic and N (make bench; the configurations: bench_matrix.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_matrix.h: the configurations of the benchmark matrix (make bench),
  * shared by the host (bench_matrix.c: time, callgrind instructions, error

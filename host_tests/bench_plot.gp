@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # host_tests/bench_plot.gp: the run-time/error plane of the benchmark matrix
 # (make bench). Data: bench_matrix.c --plot, one block per method and
 # arithmetic with lines "N ns/eval max-error" (medians of time over the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_scene.h: the control path of the engine benchmarks, shared by the
  * host (bench_engine.c) and the target (target/bench_target.c) so that

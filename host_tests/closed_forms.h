@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * closed_forms.h: g, g' and G of the seed's profiles (but the wavy one)
  * written out in long double with libm, independently of lib/, for the

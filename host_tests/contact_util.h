@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * contact_util.h: what test_unit.c and test_critical.c share (include after
  * <cmocka.h>, <math.h>, mdr.h and test_util.h): contacts made or the test

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * crit_sweep.c: mdr_critical against closed forms worked out here, in long
  * double, independently of the library (issue 16). Part of make stress: the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # fit_plot.sh: the plot of docs/fitting.md (make fit-plot). A noisy
 # approach-retract curve made by the spring engine (`mdr cycle`, machine
 # control), fitted with `mdr fit --approach --model`, drawn with gnuplot:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fl.h: x rounded to float and back, the value a float caller passes, for
  * tests that compare f32 against f64 at the same inputs (test_vectors.c,

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # host_tests/matrix.sh: the build matrix over the compile-time options of
 # lib/include/mdr_options.h (make matrix; MATRIX=short in make test).
 #

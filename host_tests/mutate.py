@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """host_tests/mutate.py: the mutation gate (make mutate, make mutate-quick).
 
 Applies each mutation of host_tests/mutations.txt to a scratch copy of lib/,

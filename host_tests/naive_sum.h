@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * naive_sum.h: the naive O(N) force of a spring table, the oracle of
  * test_engine.c and the baseline of bench_engine.c. Each full spring j

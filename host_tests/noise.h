@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * noise.h: deterministic Gaussian noise for the fit's test and benchmark
  * (xorshift64, Marsaglia 2003, and the Box-Muller transform): the same

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * q31_trace.c: a fingerprint of the q31 engine's outputs. Runs approach-
  * retract cycles of four scenes (paraboloid, exact sphere, flat punch, seed

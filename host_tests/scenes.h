@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scenes.h: the scenes of the engine's whole-cycle tests and benchmarks
  * (test_q31.c, bench_matrix.c, target/bench_target.c): every profile of the

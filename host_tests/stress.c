@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stress.c: numerical stress sweep (make stress; part of make test with the
  * short budget, `make stress STRESS=long` for the dense one).

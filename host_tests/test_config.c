@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_config.c: the test every configuration of the build matrix runs
  * (make matrix; options: lib/include/mdr_options.h). Compiled with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_config_t.h: the checks of test_config.c for one floating arithmetic
  * (included once per arithmetic with T and SFX defined, like the library's

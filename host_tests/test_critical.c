@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_critical.c: the critical-state search of issue 16 and the sampled
  * profiles of the contact module (MDR_PROFILE_TABLE): named cases from

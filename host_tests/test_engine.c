@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_engine.c: the real-time spring engine (lib/src/mdr_engine_t.c)
  * against closed forms, the foundation's equilibrium curves and critical

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_engine_ref.c: convergence of the spring engine in the number of
  * springs N against the GSL reference (ref/, called at run time), f64.

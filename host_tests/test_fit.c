@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_fit.c: the fit module (lib/include/mdr_fit.h) on curves made by the
  * library's own forward model and by the JKR closed forms through a

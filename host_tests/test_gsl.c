@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_gsl.c: lib/ against ref/ called directly (GSL at run time), for what
  * the committed vectors do not hold: the normal stress sigma(r) (4.27) of

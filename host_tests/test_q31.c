@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_q31.c: the fixed-point engine (lib/src/mdr_q31.c) against the GSL
  * reference (ref/, at run time) and against the f64 engine on the same

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_ref.c: proves the GSL reference (ref/) against the closed forms of the
  * seed chapter before anything is compared against it.

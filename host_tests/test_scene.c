@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_scene.c: the table-free scene engine (lib/src/mdr_scene_t.c) against
  * the spring engine on tables that hold the same g exactly (paraboloid and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_step.c: the contract of every real-time step (the spring engine in
  * f64, f32 and q31, the table-free scene in f64 and f32) against the closed

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_unit.c: unit tests of lib/ that need no reference data: the math
  * kernels against libm, the literature values as named tests (f32 and f64),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_util.h: the comparison every cmocka test here uses (include after
  * <cmocka.h> and <math.h>).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_vectors.c: lib/ (f32 and f64) against the committed reference vectors
  * of ref/ (ref/vectors/critical.csv and curves.csv, made by ref/mdr_refgen.c with GSL).

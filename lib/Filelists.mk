@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # lib/Filelists.mk: what a firmware build takes from libmdr. Include it from
 # your Makefile after setting MDR_ROOT (the path of this repository), then
 # compile the sources of the arithmetics you use with MDR_REQUIRED_CFLAGS,

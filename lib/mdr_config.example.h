@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_config.h template: copy it as mdr_config.h into a directory on your
  * include path, keep the lines you want, and compile the library and your

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Issue 16: critical states you can trust everywhere.
 #   crit-sweep     mdr_critical against closed forms worked out in long
 #                  double (host_tests/crit_sweep.c), f32 and f64; run by
@@ -12,7 +13,4 @@ crit-sweep: $(B)/host/crit_sweep
 	./$(B)/host/crit_sweep $(STRESS)
 stress: crit-sweep
 
-$(B)/host/test_critical: host_tests/test_critical.c host_tests/test_util.h host_tests/contact_util.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_critical: host_tests/test_critical.c host_tests/test_util.h host_tests/contact_util.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
+# test_critical is built by the suite rules of mk/tests.mk

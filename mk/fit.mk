@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # mk/fit.mk: fitting measured force curves (lib/include/mdr_fit.h, the
 # `mdr fit` command), included at the end of the Makefile.
 #
@@ -16,12 +17,8 @@ TESTS += test_fit
 SAN_TESTS += test_fit
 TGT_TESTS_m4 += test_fit
 TGT_RUNS += $(B)/tgt-m4/test_fit.run
-DEB_PKGS += gnuplot-nox
 
-$(B)/host/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/host/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) $< $(B)/host/libmdr.a -lcmocka -lm -o $@
-$(B)/san/test_fit: host_tests/test_fit.c host_tests/test_util.h host_tests/noise.h $(B)/san/libmdr.a
-	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(B)/san/libmdr.a -lcmocka -lm -o $@
+# test_fit is built by the suite rules of mk/tests.mk
 host-tests: $(B)/host/test_fit fit-cli
 san-tests: $(B)/san/test_fit
 
@@ -49,13 +46,11 @@ bench-fit: $(B)/host/bench_fit $(B)/host/mdr
 	@{ cat $(B)/bench/fit_time.md; echo; \
 	  echo "| callgrind (instructions, host build $(CFLAGS)) | per curve | per model point |"; \
 	  echo "| --- | ---: | ---: |"; \
-	  for f in $(B)/bench/fitcg/cg.out.*; do awk '/^desc: Trigger: Client Request: /{sub(/^desc: Trigger: Client Request: /, ""); l = $$0} \
-	    /^summary: /{ if (l ~ /^model/) printf "| %s | | %.0f |\n", l, $$2 / 32 / 2000; else printf "| %s | %.0f | |\n", l, $$2 / 32 }' $$f; done; \
+	  for f in $(B)/bench/fitcg/cg.out.*; do awk -f mk/callgrind_fit.awk $$f; done; \
 	} > $(BENCH_OUT)/fit.md
 	@bash host_tests/bench_fit_map.sh $(B)/host/mdr $(FIT_MAP_CURVES) >> $(BENCH_OUT)/fit.md
 	@cat $(BENCH_OUT)/fit.md
-	@awk 'FNR == NR { t = t $$0 "\n"; next } /<!-- bench-fit:begin/ { print; printf "%s", t; skip = 1; next } \
-	  /<!-- bench-fit:end/ { skip = 0 } !skip' $(BENCH_OUT)/fit.md docs/fitting.md > $(B)/bench/fitting.md && \
+	@awk -v name=bench-fit -f mk/splice.awk $(BENCH_OUT)/fit.md docs/fitting.md > $(B)/bench/fitting.md && \
 	  cp $(B)/bench/fitting.md docs/fitting.md
 	@echo "bench-fit: $(BENCH_OUT)/fit.md written; docs/fitting.md's table updated"
 bench: bench-fit

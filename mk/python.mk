@@ -1,5 +1,6 @@
+# SPDX-License-Identifier: MIT
 # mk/python.mk: the Python package in python/ (cffi in API mode over the
-# library's sources; README "Python").
+# library's sources; docs/python.md).
 #
 #   make python        build the extension in place (python/mdr/); then
 #                      PYTHONPATH=python /usr/bin/python3 -c 'import mdr'
@@ -7,7 +8,7 @@
 #                      that collects no test fails (pytest's exit status 5)
 #   make python-bench  python/bench.py: c.eq over 1e6 radii against a Python
 #                      loop of scalar calls, Engine.run against the C step;
-#                      the tables go into README.md ("Python")
+#                      the tables go into docs/python.md
 #   make python-clean  remove the extension and its build (also by make clean)
 #
 # Always the system Python (Debian's python3-cffi, -numpy, -pytest,
@@ -25,8 +26,8 @@ python-test: python $(B)/host/mdr
 	  if [ $$rc -eq 5 ]; then echo "python-test: pytest collected no tests"; exit 1; fi; exit $$rc
 
 python-bench: python
-	cd python && $(PYTHON) bench.py --readme ../README.md
-	@echo "python-bench: README.md's Python figures updated"
+	cd python && $(PYTHON) bench.py --readme ../docs/python.md
+	@echo "python-bench: docs/python.md's Python figures updated"
 
 python-clean:
 	rm -rf python/mdr/_mdr_cffi*.so $(B)/python

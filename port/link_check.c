@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/link_check.c: a freestanding program that calls the public functions
  * of one arithmetic, linked with -nostdlib -lgcc to prove lib/ needs nothing

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/semihost.c: the semihosting calls of port/target.h over the port's
  * trap mdr_sh_call(): SYS_WRITE0 (0x04), and SYS_EXIT_EXTENDED (0x20),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/sizes.c: sizeof of every instance type on a target, read back by
  * `make size` with `nm -S` (each array's size is the type's size). Compiled,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/stack_depth.awk: worst-case stack depth of functions from GCC's
 # call-graph files (-fcallgraph-info=su, one .ci per object). Depth of f =
 # its own frame + the deepest callee (lib/ has no recursion and no calls

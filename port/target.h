@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/target.h: what the ports' startup code shares (the bare-metal test
  * and benchmark programs of make target-test and make bench; not part of a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Benchmark of the Python package (make python-bench): what the C loops
 save. All figures come from one run on this machine, so they can be
 compared with each other; absolute times are not portable, the ratios are

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Build and install the Python package mdr over libmdr (cffi, API mode).
 
     make python                                   # in place (python/mdr/)

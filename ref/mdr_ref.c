@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_ref.c: the GSL double-precision reference (see mdr_ref.h).
  * Host only; uses libm and GSL. Tolerances: every quadrature asks for

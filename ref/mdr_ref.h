@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_ref.h: double-precision reference for libmdr, built on GSL and
  * numerically independent of lib/: it never uses the closed forms of g, G or

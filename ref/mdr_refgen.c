@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_refgen.c: writes the reference vectors that host tests compare lib/
  * against (committed as text; `make ref-check` regenerates and diffs them).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vecdiff.c: compares two reference-vector CSV files field by field:
  * identical headers, identical row counts, every number equal to within

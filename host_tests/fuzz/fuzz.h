@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz.h: what the libFuzzer targets of host_tests/fuzz/ share: a reader of
  * the fuzzer's bytes, the mapping of bytes to physical values, and the

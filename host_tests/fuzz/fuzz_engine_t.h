@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_engine_t.h: the checks of one float engine step (fuzz.h, top), for
  * FZ_T float (_f32) and double (_f64). Rounding allowance of the Hess band:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_init.c: the init functions with arbitrary parameters, and the
  * closed-form calls on every scene they accept. From the fuzzer's bytes: a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_init_t.h: one arithmetic of fuzz_init.c (FZ_T float or double,
  * FZ_SFX _f32 or _f64). fz_scene is defined once, before the first use.

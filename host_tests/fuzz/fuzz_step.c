@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_step.c: the step functions with arbitrary input sequences. The first
  * bytes choose a valid scene (profile and size, material, w_adv, machine,

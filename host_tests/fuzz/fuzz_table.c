@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_table.c: the tabulated-profile parser (examples/tip_csv.h, the mdr
  * CLI's reader of measured tips) and mdr_table_init_gap on what it accepts.

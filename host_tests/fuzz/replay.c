@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * replay.c: runs a fuzz target over files without libFuzzer (gcc, with
  * address and undefined sanitizers: make fuzz-replay, part of make test):

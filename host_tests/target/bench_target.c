@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * host_tests/target/bench_target.c: instructions per engine step on the
  * emulated Cortex-M4F and Cortex-M3 (make bench: QEMU mps2-an386 and

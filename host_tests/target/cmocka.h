@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * host_tests/target/cmocka.h: the part of the cmocka API the host tests use
  * (cmocka_unit_test, cmocka_run_group_tests[_name], assert_true,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * host_tests/target/step_cost.c: instructions per tick of every real-time
  * engine on the emulated Cortex-M4F and Cortex-M3 (make step-cost: QEMU

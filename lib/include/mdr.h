@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr.h: umbrella header of libmdr. Include this one.
  * Freestanding C99: needs only <stdint.h>, <stdbool.h> and <stddef.h>.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_contact.h: equilibrium, stability, critical states and stress of an
  * adhesive axisymmetric contact (closed forms of the equivalent profile).
@@ -10,8 +11,10 @@
 
 #include "mdr_types.h"
 
-#define MDR_TEMPLATE "mdr_contact_t.h"
-#include "mdr_each_arith.h"
+/* the declarations per arithmetic, written out from mdr_contact_t.h by
+ * mk/gen_headers.py (make headers) */
+#include "mdr_contact_f32.h"
+#include "mdr_contact_f64.h"
 
 /** Cap on the cells walked by mdr_critical_<type>() (beyond:
  *  MDR_E_NOCONV): the wavy profile takes four per wavelength below the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_contact_t.h: declarations of one arithmetic of the contact module.
  *
@@ -135,6 +136,7 @@ mdr_status MDR_SFX(mdr_contact_material)(MDR_SFX(mdr_contact) *c, MDR_T E, MDR_T
 
 /**
  * @brief Equivalent 1D profile at x: g(x), g'(x) and G(x) = int_0^x g.
+ * @param[in]  c   from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
  * @param[in]  x   0 < x, and x < R (sphere), x <= a0 (flat punch),
  *                 x/lambda < 2^46 (wavy, f32; 2^104 in f64: beyond, the
  *                 phase 2 pi x/lambda has no correct digit) [m]
@@ -149,6 +151,7 @@ mdr_status MDR_SFX(mdr_profile_eval)(const MDR_SFX(mdr_contact) *c, MDR_T x,
 
 /**
  * @brief Equilibrium (Griffith) state at contact radius a: seed 4.19-4.26.
+ * @param[in]  c    from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
  * @param[in]  a    contact radius, same domain as mdr_profile_eval() [m]
  * @param[out] out  filled only on MDR_OK
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_OVERFLOW
@@ -162,6 +165,7 @@ mdr_status MDR_SFX(mdr_eq)(const MDR_SFX(mdr_contact) *c, MDR_T a,
  * @brief Stress intensity and energy release rate of any state (a, d),
  *        pinned or in equilibrium: K_I = E*(g(a) - d)/sqrt(pi a) (4.17),
  *        G = K_I^2/(2E*) (4.14).
+ * @param[in]  c    from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
  * @param[in]  a    contact radius [m]
  * @param[in]  d    indentation depth [m] (any finite value)
  * @param[out] K_I  [Pa m^0.5]; negative when the edge is compressed
@@ -180,8 +184,12 @@ mdr_status MDR_SFX(mdr_stress_intensity)(const MDR_SFX(mdr_contact) *c, MDR_T a,
  *        other profiles: tanh-sinh quadrature (see mdr_contact_t.c); measured
  *        against GSL within 3e-7 (f32) and 3e-12 (f64) of the size of the two
  *        terms, except within 1e-3 a of the rim r = b of the flattened tip.
- * @param[in] r  radial position, 0 <= r < a [m]; r > 0 for the cone and the
- *               power law with n <= 1; r != b for the flattened tip
+ * @param[in] c      from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
+ * @param[in] a      contact radius [m], same domain as mdr_profile_eval()
+ * @param[in] d      indentation depth [m] (any finite value)
+ * @param[in] r      radial position, 0 <= r < a [m]; r > 0 for the cone and the
+ *                   power law with n <= 1; r != b for the flattened tip
+ * @param[out] sigma sigma_zz(r) [Pa], compressive negative; untouched unless MDR_OK
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_POSITION,
  *         MDR_E_SINGULAR, MDR_E_OVERFLOW
  */
@@ -229,6 +237,7 @@ mdr_status MDR_SFX(mdr_stress)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T r,
  * (two cells per sample interval, O(m) each). Fixed caps:
  * MDR_CRIT_SCAN_MAX cells, 200 bisection and 160 golden-section steps.
  *
+ * @param[in]  c        from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
  * @param[in]  control  MDR_CONTROL_LOAD, _GRIPS or _MACHINE
  * @param[in]  k_m      machine stiffness [N/m], finite > 0; used only for
  *                      MDR_CONTROL_MACHINE (ignored otherwise)
@@ -260,6 +269,7 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
  *        last sample; the wavy profile (where the jumps depend on the
  *        start): 3 a_x of its smooth base; without adhesion the profile's
  *        length.
+ * @param[in]  c       from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
  * @param[out] a_start [m]; untouched unless MDR_OK
  * @return MDR_OK, MDR_E_NULL, MDR_E_NOCONV, MDR_E_RADIUS (the sphere's root
  *         within rounding of R), MDR_E_OVERFLOW (the radius is beyond the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_each_arith.h: includes the contract template named by MDR_TEMPLATE
  * once per floating arithmetic the build has (mdr_options.h), with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_engine.h: the real-time spring engine. A fixed-size table of springs
  * (caller-owned, or a const array generated on the host by `mdr table`) and
@@ -68,7 +69,9 @@
 /** Short English name of an event code ("pull-off", ...). Never NULL. */
 const char *mdr_event_str(uint8_t event);
 
-#define MDR_TEMPLATE "mdr_engine_t.h"
-#include "mdr_each_arith.h"
+/* the declarations per arithmetic, written out from mdr_engine_t.h by
+ * mk/gen_headers.py (make headers) */
+#include "mdr_engine_f32.h"
+#include "mdr_engine_f64.h"
 
 #endif /* MDR_ENGINE_H */

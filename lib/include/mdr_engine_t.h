@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_engine_t.h: declarations of one arithmetic of the spring engine.
  * Included by mdr_engine.h once per arithmetic (MDR_T, MDR_SFX defined); read

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_fit.h: from a measured force curve to E*, w, the contact point and the
  * force baseline (Levenberg-Marquardt on the library's quasi-static model),
@@ -55,8 +56,10 @@
  *  values. Never NULL. */
 const char *mdr_regime_str(uint8_t regime);
 
-#define MDR_TEMPLATE "mdr_fit_t.h"
-#include "mdr_each_arith.h"
+/* the declarations per arithmetic, written out from mdr_fit_t.h by
+ * mk/gen_headers.py (make headers) */
+#include "mdr_fit_f32.h"
+#include "mdr_fit_f64.h"
 
 #endif /* MDR_CFG_FIT */
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_fit_t.h: declarations of one arithmetic of the fit module.
  *
@@ -75,7 +76,8 @@ typedef struct {
 /**
  * @brief Default options: the given k_m, z_e = MDR_FIT_Z_E_DEFAULT, no first
  *        guess (two-point), MDR_FIT_FULL, no approach fit.
- * @param[out] o  filled (no check of k_m: mdr_fit_curve_<type>() checks it)
+ * @param[out] o    filled (no check of k_m: mdr_fit_curve_<type>() checks it)
+ * @param[in]  k_m  machine (cantilever) stiffness [N/m], copied into o->k_m
  */
 void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
 
@@ -100,10 +102,11 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  * @param[in]  tip   the profile, from mdr_contact_init_<type>() (its E* and w
  *                   are not used); every kind but the flat punch
  * @param[in]  opts  options (mdr_fit_defaults_<type>())
- * @param[in]  z, F  n samples in time order [m], [N] (see above)
+ * @param[in]  z,F   n samples in time order [m], [N] (see above)
  * @param[in]  n     number of samples
  * @param      work  caller's workspace of work_len >= MDR_FIT_WORK_LEN(n)
  *                   elements (contents on return unspecified)
+ * @param[in]  work_len  number of elements of work
  * @param[out] out   written only on MDR_OK
  * @return MDR_OK;
  *   bad arguments: MDR_E_NULL, MDR_E_NONFINITE (a NaN or infinite sample or
@@ -133,11 +136,12 @@ mdr_status MDR_SFX(mdr_fit_curve)(const MDR_SFX(mdr_contact) *tip, const MDR_SFX
  * @param[in]  c       profile and material (E*, and w of this branch: w for
  *                     the retract, w_adv for the approach); not a flat punch
  * @param[in]  k_m     machine stiffness [N/m], finite > 0
- * @param[in]  z0, F_b contact point [m] and baseline [N]
+ * @param[in]  z0,F_b  contact point [m] and baseline [N]
  * @param[in]  branch  MDR_FIT_RETRACT (z non-increasing: the contact starts
  *                     on the stable branch at z[0] and separates at the fold)
  *                     or MDR_FIT_APPROACH (z non-decreasing)
  * @param[in]  z       n base positions [m]
+ * @param[in]  n       number of positions
  * @param[out] F_out   n forces [N]; written only on MDR_OK
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (k_m, branch),
  *         MDR_E_KIND (flat punch), MDR_E_ORDER (z not monotonic in the

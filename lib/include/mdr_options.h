@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_options.h: every compile-time option of libmdr with its default, in
  * one place. Included by mdr_types.h (so by every header and source).

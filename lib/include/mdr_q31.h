@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_q31.h: the spring engine in fixed point, for cores without an FPU
  * (Cortex-M0/M3, RV32IMAC). Same model, state machine, events and energy

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_scene.h: table-free scenes. Profiles whose equivalent profile is a
  * monomial (paraboloid, cone, power laws with integer n) stepped like the
@@ -14,7 +15,9 @@
  * argument of mdr_scene_init_*(); MDR_OUT_ENERGY is not used: a scene keeps
  * its energy in the mdr_energy_<type> given to its init). */
 
-#define MDR_TEMPLATE "mdr_scene_t.h"
-#include "mdr_each_arith.h"
+/* the declarations per arithmetic, written out from mdr_scene_t.h by
+ * mk/gen_headers.py (make headers) */
+#include "mdr_scene_f32.h"
+#include "mdr_scene_f64.h"
 
 #endif /* MDR_SCENE_H */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_scene_t.h: declarations of one arithmetic of the table-free scene
  * engine. Included by mdr_scene.h once per arithmetic (MDR_T, MDR_SFX

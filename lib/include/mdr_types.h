@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * libmdr: adhesive (JKR-type) normal contact of axisymmetric bodies by the
  * Method of Dimensionality Reduction.

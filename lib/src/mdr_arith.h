@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_arith.h: the macros that make one template source serve every floating
  * arithmetic. A translation unit defines MDR_ARITH_F32 or MDR_ARITH_F64 and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_arith_q31.h: the q31 arithmetic of the templates written once for
  * every arithmetic (the state machine engine/mdr_machine.inc and the spring

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* mdr_f32.c: the float arithmetic of every template (math, profiles, tables,
  * equilibrium, engines, q31 init); empty when MDR_CFG_F32 is 0 (mdr_options.h). */
 #define MDR_ARITH_F32

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* mdr_f64.c: the double arithmetic (host builds only) of every template; empty when MDR_CFG_F64 is 0 (mdr_options.h). */
 #define MDR_ARITH_F64
 #include <stddef.h>

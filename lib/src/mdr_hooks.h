@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_hooks.h: the port hooks lib/ uses, with their defaults. The port's
  * mdr_port.h (port/host, port/cortex-m, port/riscv, or a firmware's own,
@@ -7,6 +8,12 @@
  *                  square root (the FPU instruction); default: lib/'s own
  *                  Newton routine (lib/src/math/mdr_math.inc, correctly rounded
  *                  to 1 ulp)
+ *   MDR_PORT_SQRT_BUILTIN  defined by a port whose square root is the
+ *                  compiler's __builtin_sqrt(f): GCC and Clang make it one
+ *                  instruction only with -fno-math-errno (otherwise a call
+ *                  of sqrtf/sqrt that a freestanding link cannot resolve),
+ *                  so such a build without that flag stops here with an
+ *                  #error (the compilers define __NO_MATH_ERRNO__ with it)
  *   MDR_INLINE     qualifiers of the small helpers of the step (default
  *                  `static inline`)
  *   MDR_FORCE_INLINE  qualifiers of the step's fast paths, which the public
@@ -29,6 +36,11 @@
 #define MDR_HOOKS_H
 
 #include "mdr_port.h"
+
+#if defined(MDR_PORT_SQRT_BUILTIN) && (defined(__GNUC__) || defined(__clang__)) && \
+    !defined(__NO_MATH_ERRNO__)
+#error "libmdr: this port maps sqrt to __builtin_sqrt(f), which needs -fno-math-errno (MDR_REQUIRED_CFLAGS of lib/Filelists.mk); without it the objects call sqrtf/sqrt from libm"
+#endif
 
 #ifndef MDR_INLINE
 #define MDR_INLINE static inline

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* mdr_q31.c: the integer step of the fixed-point engines: the state machine
  * and the spring solver written once for every arithmetic
  * (engine/mdr_machine.inc, engine/mdr_edge_table.inc) over the q31

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* mdr_status.c: names of the status codes (shared by every arithmetic). */
 #include "mdr_types.h"
 #include "mdr_engine.h"

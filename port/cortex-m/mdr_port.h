@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/mdr_port.h: hooks for Arm Cortex-M (arm-none-eabi-gcc).
  * Chosen by -Iport/cortex-m; compiler flags per core: port/cortex-m/port.mk.
@@ -31,6 +32,7 @@
 
 #if defined(__ARM_FP) && (__ARM_FP & 4)
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
+#define MDR_PORT_SQRT_BUILTIN 1 /* needs -fno-math-errno (mdr_hooks.h) */
 #endif
 
 /* memory-mapped registers of the System Control Space (ARMv6-M/v7-M ARM) */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/semihost.c: the semihosting trap of M-profile cores
  * (port/target.h): BKPT 0xAB with the operation in r0 and the parameter in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/startup.c: reset and fault handlers, vector table for a
  * Cortex-M program linked with a board script of port/cortex-m (mps2.ld,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/host/mdr_port.h: hooks for host builds (x86-64, aarch64 with an FPU).
  * Chosen by the include path (-Iport/host). The hooks lib/ uses and their
@@ -21,6 +22,7 @@
 #ifndef MDR_PORT_OWN_SQRT
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
 #define MDR_PORT_SQRT_F64(x) __builtin_sqrt(x)
+#define MDR_PORT_SQRT_BUILTIN 1 /* needs -fno-math-errno (mdr_hooks.h) */
 #endif
 
 #define MDR_ASSERT(cond) ((cond) ? (void)0 : __builtin_trap())

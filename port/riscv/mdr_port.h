@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv/mdr_port.h: hooks for RV32 (riscv64-unknown-elf-gcc,
  * -march=rv32...). Chosen by -Iport/riscv; compiler flags per core:
@@ -22,6 +23,7 @@
 
 #if defined(__riscv_flen) && __riscv_flen >= 32
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
+#define MDR_PORT_SQRT_BUILTIN 1 /* needs -fno-math-errno (mdr_hooks.h) */
 #endif
 #if defined(__riscv_flen) && __riscv_flen >= 64
 #define MDR_PORT_SQRT_F64(x) __builtin_sqrt(x)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv/semihost.c: the semihosting trap of RISC-V ("RISC-V
  * Semihosting" v0.2; port/target.h): the sequence slli zero, zero, 0x1f;

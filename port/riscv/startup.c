@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv/startup.c: reset and trap entry of an RV32 program linked
  * with port/riscv/virt.ld, in machine mode on one hart. _start sets the

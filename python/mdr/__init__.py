@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr: adhesive (JKR-type) contact mechanics by the Method of
 Dimensionality Reduction, over the C library libmdr (the same code the
 firmware runs; cffi in API mode, compiled against the library's headers).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """cffi (API mode) build of the extension mdr._mdr_cffi.
 
 The C compiler, not cffi's parser, reads libmdr's headers: the cdef below

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The extension, the error type and the array plumbing shared by the
 package's modules."""
 import numpy as np

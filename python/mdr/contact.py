@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.Contact: closed-form equilibrium, critical states and stress of an
 adhesive axisymmetric contact (libmdr's contact module, lib/include/
 mdr_contact_t.h). SI units; compressive force and depth into the surface

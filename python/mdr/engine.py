@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.Engine: libmdr's real-time spring engine (lib/include/mdr_engine_t.h,
 mdr_q31.h) driven along a piecewise-linear path of the controlled variable,
 the same way as `mdr cycle` (examples/mdr_cli.c): the same table, the same

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.plot: force curves of engine runs (needs matplotlib, imported when a
 function here is called).
 

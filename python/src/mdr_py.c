@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_py.c: the C side of the Python package (see mdr_py.h). The loops
  * over points are instantiated per floating arithmetic from mdr_py_t.inc;

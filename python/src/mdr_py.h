@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_py.h: the C side of the Python package (python/mdr): loops over
  * arrays of points and over the ticks of a path, so that no Python loop runs

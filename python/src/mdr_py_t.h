@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_py_t.h: the array loops over a contact, for one floating arithmetic.
  * Included by mdr_py.h through the library's mdr_each_arith.h (MDR_T,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Shared fixtures of the mdr tests: the package from python/ (built in place
 by `make python`), the C CLI for comparisons."""
 import os

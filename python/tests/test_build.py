@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The extension cannot drift from the library's headers: the package's
 declarations compile against them, and each kind of mismatch a changed
 header could cause fails the build (here planted in a copy of the

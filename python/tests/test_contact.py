@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.Contact against closed forms worked out here (seed chapter 4) and the
 literature values of /work/shared/CHECK_VALUES.md, and vectorised calls
 against scalar calls.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.Engine against the C CLI (`mdr cycle`, the same path), against closed
 forms, and its run semantics (continuing runs, reset, event buffers,
 refused ticks).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Every refusal raises mdr.Error with the library's status name and text,
 names the element, tick or path value that failed, and no NaN or infinity
 escapes. Tolerances: none (statuses and texts are compared exactly)."""

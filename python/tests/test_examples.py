@@ -1,5 +1,6 @@
-"""The example a scientist copies (examples/afm_worn_tip.py) and the README's
-Python quick start run as written; the example writes its plot, and its
+# SPDX-License-Identifier: MIT
+"""The example a scientist copies (examples/afm_worn_tip.py), the README's
+Python quick start and the longer one of docs/python.md run as written; the example writes its plot, and its
 fresh-tip pull-off through the engine agrees with the closed form to the 4
 digits it prints. Tolerance: the printed digits."""
 import os
@@ -22,12 +23,23 @@ def test_afm_worn_tip(tmp_path):
     assert out.stat().st_size > 20000
 
 
-def test_readme_quick_start(tmp_path, monkeypatch):
-    """The README's Python quick start runs as written."""
+def test_readme_quick_start(capsys):
+    """The README's Python quick start runs as written and prints -1.5 pi w R."""
     with open(os.path.join(ROOT, "README.md")) as f:
+        text = f.read()
+    block = re.search(r"^## Python quick start\n.*?^```python\n(.*?)^```", text, re.S | re.M).group(1)
+    exec(compile(block, "README.md (Python quick start)", "exec"), {})
+    ref = -1.5 * 3.141592653589793 * 0.05 * 10e-6
+    # measured: equal to the last bit; 1e-15 relative (about 5 ulp) for other libms
+    assert abs(float(capsys.readouterr().out) / ref - 1) < 1e-15
+
+
+def test_docs_quick_start(tmp_path, monkeypatch):
+    """The quick start of docs/python.md runs as written."""
+    with open(os.path.join(ROOT, "docs", "python.md")) as f:
         text = f.read()
     block = re.search(r"^## Python\n.*?^```python\n(.*?)^```", text, re.S | re.M).group(1)
     monkeypatch.chdir(tmp_path)
     scope = {}
-    exec(compile(block, "README.md (Python quick start)", "exec"), scope)
+    exec(compile(block, "docs/python.md (Python quick start)", "exec"), scope)
     assert scope["s"].F < 0 and scope["run"].pull_off is not None and (tmp_path / "cycle.png").exists()

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.plot.fd renders F-d and F-z curves in nm and nN with the events
 marked (the PNGs are written to build/python/plots/ to look at). Tolerances:
 the marked points are the events' states to 1e-12 relative (unit scaling

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_machine.h: what every instance of the state machine shares, whatever
  * its arithmetic (included once per translation unit by the engines'

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_math.h: declarations of libmdr's own freestanding math (no libm), one
  * set per arithmetic (include after mdr_arith.h). Internal: not installed.

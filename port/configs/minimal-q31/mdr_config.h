@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_config.h of the minimal q31 scene (make size: m0-q31min): a
  * Cortex-M0 steps a paraboloid finger in fixed point on a const spring

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_config.h of the minimal scene (make size: m4f-scene): a gripper
  * finger that needs the force on a paraboloid, in float, and nothing else.

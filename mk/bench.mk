@@ -1,0 +1,55 @@
+# SPDX-License-Identifier: MIT
+# mk/bench.mk: benchmarks (make bench, make step-cost). They write
+# host_tests/bench/ and docs/performance.md, never README.md.
+#
+# engine step cost against N and against the naive O(N) force sum (one run)
+.PHONY: bench step-cost
+$(B)/host/bench_engine: host_tests/bench_engine.c host_tests/bench_scene.h $(B)/host/libmdr.a
+	$(HOSTCC) -std=c99 -Wall -Wextra -Werror -Ilib/include -O2 $< $(B)/host/libmdr.a -lm -o $@
+# instructions per step on the emulated Cortex-M4F and M3 (QEMU -icount
+# shift=0; the M3 build runs the step from RAM, as in target-test)
+BENCH_CORE_m4 := Cortex-M4F
+BENCH_CORE_m3 := Cortex-M3
+$(B)/tgt-%/bench_target.elf: host_tests/target/bench_target.c host_tests/bench_scene.h host_tests/bench_matrix.h host_tests/scenes.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
+	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(BENCH_CORE_$*)"' $(BENCH_TGT_$*) $(TGT_TEST_CFLAGS) $< \
+	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
+# the M4F also counts the rows of the benchmark matrix
+BENCH_TGT_m4 := -DBENCH_MATRIX
+# Instructions per tick of every engine, arithmetic, core and cycle
+# (host_tests/target/step_cost.c: QEMU -icount shift=7, exact counts per
+# tick), one CSV line each: engine,arith,core,cycle,mean,max,separated,
+# pinned,moving; written to $(B)/bench/step_cost.csv (make bench runs it).
+STEPCOST_CORE_m4 := m4f
+STEPCOST_CORE_m3 := m3
+$(B)/tgt-%/step_cost.elf: host_tests/target/step_cost.c host_tests/bench_scene.h $(B)/tgt-%/libmdr.a $(MDR_CM_STARTUP) $(MDR_CM_LDSCRIPT)
+	$(TGT_$*) -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(STEPCOST_CORE_$*)"' $(TGT_TEST_CFLAGS) $< \
+	  $(MDR_CM_STARTUP) $(B)/tgt-$*/libmdr.a $(MDR_CM_LDFLAGS) -lm -o $@
+step-cost: $(B)/tgt-m4/step_cost.elf $(B)/tgt-m3/step_cost.elf
+	@mkdir -p $(B)/bench
+	@for c in m4 m3; do port/cortex-m/run-qemu -M $$( [ $$c = m4 ] && echo $(QEMU_m4) || echo $(QEMU_m3) ) -shift 7 \
+	  -t 600 $(B)/tgt-$$c/step_cost.elf > $(B)/bench/step_cost_$$c.log || { cat $(B)/bench/step_cost_$$c.log; exit 1; }; done
+	@{ grep -h '^engine,' $(B)/bench/step_cost_m4.log; grep -hv '^engine,\|^#' $(B)/bench/step_cost_m4.log $(B)/bench/step_cost_m3.log; } \
+	  > $(B)/bench/step_cost.csv
+	@grep -h '^#' $(B)/bench/step_cost_m4.log $(B)/bench/step_cost_m3.log; cat $(B)/bench/step_cost.csv
+# The benchmark matrix (host_tests/bench_matrix.c): time and error on the
+# host, instructions from callgrind (one dump per row, divided by the row's
+# evaluations) and from the M4F run above; CSV, Markdown and the plot are
+# written to host_tests/bench/ (docs/performance.md shows the summary).
+BENCH_OUT := host_tests/bench
+$(B)/host/bench_matrix: host_tests/bench_matrix.c host_tests/bench_matrix.h host_tests/scenes.h host_tests/naive_sum.h $(REF_SRC) ref/mdr_ref.h $(B)/host/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(REF_SRC) $(B)/host/libmdr.a $(GSL_LIBS) -o $@
+bench: $(B)/host/bench_engine $(B)/host/bench_matrix $(B)/tgt-m4/bench_target.elf $(B)/tgt-m3/bench_target.elf
+	@mkdir -p $(B)/bench $(BENCH_OUT)
+	./$(B)/host/bench_engine
+	port/cortex-m/run-qemu -M $(QEMU_m4) -icount -t 1200 $(B)/tgt-m4/bench_target.elf > $(B)/bench/m4.log || { cat $(B)/bench/m4.log; exit 1; }
+	@grep -v '^M4,' $(B)/bench/m4.log; grep '^M4,' $(B)/bench/m4.log | sed 's/^M4,//' > $(B)/bench/m4.csv
+	port/cortex-m/run-qemu -M $(QEMU_m3) -icount -t 600 $(B)/tgt-m3/bench_target.elf
+	@rm -rf $(B)/bench/cg && mkdir -p $(B)/bench/cg
+	valgrind --tool=callgrind --callgrind-out-file=$(B)/bench/cg/cg.out ./$(B)/host/bench_matrix callgrind 2> $(B)/bench/callgrind.log || { cat $(B)/bench/callgrind.log; exit 1; }
+	@for f in $(B)/bench/cg/cg.out.*; do awk -f mk/callgrind_rows.awk $$f; done > $(B)/bench/host_instr.csv
+	./$(B)/host/bench_matrix time --host-instr $(B)/bench/host_instr.csv --m4 $(B)/bench/m4.csv \
+	  --csv $(BENCH_OUT)/bench.csv --md $(BENCH_OUT)/bench.md --plot $(B)/bench/plot.dat
+	gnuplot -e "datafile='$(B)/bench/plot.dat'; outfile='$(BENCH_OUT)/bench.png'" host_tests/bench_plot.gp
+	@awk -v name=bench -v from='## Summary' -v to='## Every row' -f mk/splice.awk \
+	  $(BENCH_OUT)/bench.md docs/performance.md > $(B)/bench/performance.md && cp $(B)/bench/performance.md docs/performance.md
+	@echo "bench: $(BENCH_OUT)/bench.csv, bench.md, bench.png written; docs/performance.md's summary updated"

@@ -1,0 +1,36 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# mk/cmake_check.sh DIR: examples/cmake-consumer built with CMake in DIR
+# (make cmake-check): add_subdirectory on the host; libmdr built, installed
+# and found with find_package on the host; add_subdirectory cross-compiled
+# for the Cortex-M4F (cmake/arm-none-eabi.cmake), run on QEMU, its libmdr
+# objects free of double-precision helpers. Each program must exit 0.
+set -eu
+dir=$1
+src=$(pwd)
+rm -rf "$dir"
+mkdir -p "$dir"
+log=$dir/log
+step() {  # step NAME command...: run quietly, show the log on failure
+    name=$1; shift
+    "$@" > "$log" 2>&1 || { cat "$log"; echo "cmake-check: $name failed"; exit 1; }
+}
+step "configure (add_subdirectory)" cmake -S examples/cmake-consumer -B "$dir/sub" -DMDR_SOURCE_DIR="$src"
+step "build (add_subdirectory)" cmake --build "$dir/sub" -j2
+echo "cmake-check host, add_subdirectory: $("$dir/sub/consumer")"
+
+step "configure libmdr" cmake -S . -B "$dir/lib" -DCMAKE_INSTALL_PREFIX="$dir/prefix" -DBUILD_SHARED_LIBS=OFF
+step "build libmdr" cmake --build "$dir/lib" -j2
+step "install libmdr" cmake --install "$dir/lib"
+step "configure (find_package)" cmake -S examples/cmake-consumer -B "$dir/pkg" -DCMAKE_PREFIX_PATH="$dir/prefix"
+step "build (find_package)" cmake --build "$dir/pkg" -j2
+echo "cmake-check host, find_package: $("$dir/pkg/consumer")"
+
+step "configure (Cortex-M4F)" cmake -S examples/cmake-consumer -B "$dir/m4f" -DMDR_SOURCE_DIR="$src" \
+    -DCMAKE_TOOLCHAIN_FILE="$src/cmake/arm-none-eabi.cmake" -DCMAKE_BUILD_TYPE=MinSizeRel
+step "build (Cortex-M4F)" cmake --build "$dir/m4f" -j2
+dbl=$(arm-none-eabi-nm -u "$dir/m4f/mdr/libmdr.a" | grep '__aeabi_d' || true)
+[ -z "$dbl" ] || { echo "cmake-check: double-precision helpers in the Cortex-M4F libmdr.a: $dbl"; exit 1; }
+out=$(port/cortex-m/run-qemu -M mps2-an386 -t 60 "$dir/m4f/consumer") || {
+    echo "$out"; echo "cmake-check: the Cortex-M4F consumer failed on QEMU"; exit 1; }
+echo "cmake-check Cortex-M4F (QEMU mps2-an386), add_subdirectory: $out"
