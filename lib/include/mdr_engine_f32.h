@@ -145,6 +145,14 @@ typedef struct {
  * @param[in]  x_max table extent [m], > 0 and inside the profile's domain
  *                   (x_max < R for the sphere). Flat punch: x_max <= a0, and
  *                   x_max == a0 makes the rim a wall (the edge stops there).
+ *                   A flat's rim b (the flattened tip's; a sampled
+ *                   profile's first kink) is put on a node k: the spring
+ *                   width is b/k instead of x_max/n, k the whole springs
+ *                   below b rounded down, so the table reaches up to one
+ *                   part in k beyond x_max (or, where a sampled profile
+ *                   ends first, rounded up: short of x_max by less than
+ *                   one part in k). tab->h n is the extent made; rims in
+ *                   spring 0 (b < x_max/n) stay where they are.
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
  *         MDR_E_OVERFLOW (x_max too large for the arithmetic)
  */
@@ -167,7 +175,10 @@ mdr_status mdr_table_init_profile_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
  * order 2.5 (measured 2.47 for the exact sphere, host_tests/test_engine.c,
  * gap_table_order; README "Spring engine"). Quadratic f
  * (paraboloid) is reproduced to rounding. f(0) may be any value (only f'
- * enters). Cost O(n*m) at init.
+ * enters). The first kink of the samples (a worn flat's rim) is put on a
+ * node by shortening the table by less than one part in k, k the springs
+ * below it (as mdr_table_init_profile()): its flat-edge separation is then
+ * Kendall's to rounding. Cost O(n*m) at init.
  * @param[in] r  radii [m], r[0] = 0, strictly increasing, finite
  * @param[in] f  gap f(r_i) [m], finite
  * @param[in] m  points, >= MDR_TABLE_MIN_POINTS

@@ -173,11 +173,16 @@ mdr_status mdr_fit_model_f64(const mdr_contact_f64 *c, double k_m, double z0, do
  * @brief Tabor parameter mu = (R w^2/(E*^2 z_e^3))^(1/3) and the regime.
  *
  * R is the tip's radius of curvature at its apex where the profile has one:
- * R (paraboloid, sphere), 1/(2C) (power law with n = 2),
- * 1/(1/R + 4 pi^2 h/lambda^2) (wavy). Profiles without a finite, nonzero
- * apex curvature (cone, other power laws, flattened tip; sampled tips)
- * take the radius of the paraboloid with the same equivalent profile at
- * the contact radius a_c: R = a_c^2/g(a_c) (exact for a paraboloid).
+ * R (paraboloid, sphere, and the flattened tip's paraboloid), 1/(2C)
+ * (power law with n = 2), 1/(1/R + 4 pi^2 h/lambda^2) (wavy), and for a
+ * sampled tip (MDR_PROFILE_TABLE) 1/f''(0) of the samples' model (f'
+ * linear on each interval, lib/src/profile/mdr_abel.inc: the curvature of
+ * the first interval) where that model starts smooth, |f'(0)| <= f''(0)
+ * r_1/8 (exact for a sampled paraboloid). Profiles without a finite,
+ * nonzero apex curvature (cone, other power laws; a sampled tip with a
+ * flat or a pointed apex) take the radius of the paraboloid with the same
+ * equivalent profile at the contact radius a_c: R = a_c^2/g(a_c) (exact
+ * for a paraboloid).
  *
  * @param[in]  c       profile and material (E* > 0, w >= 0)
  * @param[in]  z_e     equilibrium distance [m], finite > 0
