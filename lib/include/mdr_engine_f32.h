@@ -179,6 +179,9 @@ mdr_status mdr_table_init_profile_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
  * node by shortening the table by less than one part in k, k the springs
  * below it (as mdr_table_init_profile()): its flat-edge separation is then
  * Kendall's to rounding. Cost O(n*m) at init.
+ * @param[out] tab  table header; untouched unless MDR_OK
+ * @param[out] node caller storage of MDR_TABLE_NODES(n) nodes
+ * @param[in] n  springs, MDR_SPRINGS_MIN..MDR_SPRINGS_MAX
  * @param[in] r  radii [m], r[0] = 0, strictly increasing, finite
  * @param[in] f  gap f(r_i) [m], finite
  * @param[in] m  points, >= MDR_TABLE_MIN_POINTS
@@ -192,6 +195,9 @@ mdr_status mdr_table_init_gap_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
  * @brief Spring table of a tabulated equivalent profile g given directly at
  *        x_i = i*h, i = 0..n (g[0] must be 0). Between nodes g is linear
  *        (q_i = 0) and G the trapezoidal prefix sums, exact for that g.
+ * @param[out] tab  table header; untouched unless MDR_OK
+ * @param[out] node caller storage of MDR_TABLE_NODES(n) nodes
+ * @param[in] n  springs, MDR_SPRINGS_MIN..MDR_SPRINGS_MAX
  * @param[in] h  spring width [m], finite > 0
  * @param[in] g  n+1 values [m], finite
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_PARAM (h),
@@ -202,6 +208,7 @@ mdr_status mdr_table_init_g_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
 
 /**
  * @brief Start an engine on a table, separated (a = 0, d = 0, F = 0).
+ * @param[out] e     the engine; untouched unless MDR_OK
  * @param[in] tab    a table from mdr_table_init_*() or a generated const
  *                   table; must outlive the engine
  * @param[in] E      E* > 0 [Pa]
@@ -218,6 +225,7 @@ mdr_status mdr_engine_init_f32(mdr_engine_f32 *e, const mdr_table_f32 *tab,
 
 /**
  * @brief One control tick with the indentation d held (fixed grips).
+ * @param[in,out] e  the engine; unchanged unless MDR_OK (but for its sticky flags)
  * @param[in]  d    indentation [m], finite (negative: a gap)
  * @param[out] out  what happened; written only on MDR_OK
  * @return MDR_OK; MDR_E_NULL, MDR_E_NONFINITE; MDR_E_OUTSIDE (state

@@ -189,6 +189,9 @@ mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
  *        scene constants, rounded to nearest. The float version carries
  *        ~2^-22 relative error into c_w, c_adv and the machine weights
  *        (README "Fixed point", error budget).
+ * @param[out] e    the engine; untouched unless MDR_OK
+ * @param[in] tab   a q31 table (mdr_table_q31_from_f32/_f64 or generated);
+ *                  must outlive the engine
  * @param[in] E, w, w_adv  as mdr_engine_init_f32()
  * @param[in] k_m  machine stiffness [N/m], 0 for none; with a machine
  *                 kappa = 2 E* L / k_m must be <= 2^16 (the relative error
@@ -233,6 +236,8 @@ mdr_status mdr_engine_outputs_q31(mdr_engine_q31 *e, uint8_t outputs);
  * @brief SI value -> raw q31 value of quantity q (MDR_Q_A/D/F/Z), rounded to
  *        nearest (float arithmetic; for host code and for firmware that has
  *        float at hand), with every failure named.
+ * @param[in]  e    an initialised engine (its units)
+ * @param[in]  q    MDR_Q_A, MDR_Q_D, MDR_Q_F or MDR_Q_Z
  * @param[in]  v    the value in SI units [m, m, N, m]
  * @param[out] raw  the raw value, untouched unless MDR_OK
  * @return MDR_OK, MDR_E_NULL (e or raw), MDR_E_PARAM (an unknown q, or an

@@ -83,7 +83,12 @@ mdr_status MDR_SFX(mdr_scene_init_paraboloid)(MDR_SFX(mdr_scene) *s, MDR_T R, MD
  *        paraboloid, the cone, a power law with integer n (w from the
  *        contact). Other profiles need a spring table (mdr_engine_t.h):
  *        MDR_E_KIND.
+ * @param[out] s  the scene; untouched unless MDR_OK
  * @param[in] c  an initialised contact (mdr_contact_init_<type>())
+ * @param[in] w_adv  work of adhesion on approach, 0 <= w_adv <= w [J/m^2]
+ * @param[in] k_m    machine stiffness [N/m], 0 for none
+ * @param[in] outputs  MDR_OUT_* groups the steps compute
+ * @param[in] en     energy bookkeeping to keep (zeroed here), or NULL
  * @return as mdr_scene_init_paraboloid(); MDR_E_KIND for profiles without a
  *         table-free path
  */
@@ -93,6 +98,8 @@ mdr_status MDR_SFX(mdr_scene_init_contact)(MDR_SFX(mdr_scene) *s, const MDR_SFX(
 
 /**
  * @brief One control tick with the indentation d [m] held (fixed grips).
+ * @param[in,out] s  the scene; unchanged unless MDR_OK (but for its sticky flags)
+ * @param[in]  d    indentation [m], finite
  * @param[out] out  what happened; only the fields of s->outputs are written
  *                  (d and F always), and only on MDR_OK
  * @return MDR_OK; MDR_E_NULL, MDR_E_NONFINITE; MDR_E_OVERFLOW (a result or
