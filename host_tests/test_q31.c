@@ -288,9 +288,10 @@ static void errors(void **st)
      * range (the header keeps them as float): MDR_E_OVERFLOW, not an
      * infinite or zero Dg that the init would blame on the header */
     {
-        static const double xm[3] = {1e30, 1e-30, 1e-39}; /* g ~ 5e65, ~5e-55; L < FLT_MIN */
+        /* g ~ 5e65; 2e38 (Dg = 2^128, just beyond FLT_MAX); ~5e-55; L < FLT_MIN */
+        static const double xm[4] = {1e30, 1.4e16, 1e-30, 1e-39};
         int k;
-        for (k = 0; k < 3; k++) {
+        for (k = 0; k < 4; k++) {
             assert_int_equal(mdr_table_init_profile_f64(&t64, n128, 128, &c, xm[k]), MDR_OK);
             assert_int_equal(mdr_table_q31_from_f64(&tq, nq128, &t64), MDR_E_OVERFLOW);
             assert_memory_equal(&tq, &tq0, sizeof tq);

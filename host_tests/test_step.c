@@ -653,6 +653,72 @@ static void energy_overflow_f32(void **st)
     assert_memory_equal(&e, &keep, sizeof e);
 }
 
+/* The band set by a slow tick (a jump-in under fixed grips with w_adv > 0:
+ * the pin is computed from the state, not from the root identity of the
+ * fast path): a retraction by 0.3 of the band's width (dl_w - dl_adv at the
+ * radius, worked out here) leaves the edge where it was, bit for bit, and
+ * 1.5 widths move it, in every engine. */
+static void band_after_jump_in(void **st)
+{
+    int kind;
+    (void)st;
+    for (kind = 0; kind < NKIND; kind++) {
+        eng g;
+        out_t o;
+        double d = -0.05e-6, a = 0, dj = 0, wid;
+        int i;
+        char what[96];
+        eng_tables(&g, 1024, 4e-6);
+        eng_init(&g, kind, MDR_CONTROL_GRIPS, JW, 0.02, 0);
+        for (i = 0; i < 2000 && a == 0; i++) {
+            d += 1e-10;
+            assert_int_equal(eng_step(&g, d, &o), MDR_OK);
+            if (o.event == MDR_EV_JUMP_IN) {
+                a = o.a, dj = d;
+            }
+        }
+        assert_true(a > 0);
+        wid = sqrt(2 * PI_ * a / JE) * (sqrt(JW) - sqrt(0.02));
+        assert_int_equal(eng_step(&g, dj - 0.3 * wid, &o), MDR_OK);
+        snprintf(what, sizeof what, "%s: pinned after the jump-in", kname[kind]);
+        if (o.a != a) {
+            fail_msg("%s: a %.17g moved to %.17g", what, a, o.a);
+        }
+        assert_int_equal(eng_step(&g, dj - 1.5 * wid, &o), MDR_OK);
+        assert_true(o.a < a);
+    }
+}
+
+/* The force-only fast path of a separated body takes the tick's rules: in
+ * float d = -inf is refused (MDR_E_NONFINITE, state kept), in q31 a control
+ * below -2 units saturates to -2 units with MDR_FLAG_SAT, as with every
+ * output on. */
+static void separated_force_only(void **st)
+{
+    eng g;
+    mdr_step_f32 o32;
+    mdr_step_q31 oq, oq2;
+    mdr_engine_f32 keep;
+    mdr_engine_q31 q2;
+    (void)st;
+    eng_tables(&g, 64, 8e-6);
+    eng_init(&g, K_F32, MDR_CONTROL_GRIPS, JW, 0.0, 0);
+    assert_int_equal(mdr_engine_outputs_f32(&g.e32, 0), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_f32(&g.e32, -1e-7f, &o32), MDR_OK);
+    keep = g.e32;
+    assert_int_equal(mdr_engine_step_d_f32(&g.e32, -INFINITY, &o32), MDR_E_NONFINITE);
+    assert_memory_equal(&g.e32, &keep, sizeof keep);
+    eng_init(&g, K_Q31, MDR_CONTROL_GRIPS, JW, 0.0, 0);
+    q2 = g.eq;
+    assert_int_equal(mdr_engine_outputs_q31(&g.eq, 0), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_q31(&g.eq, -3 * MDR_Q29_ONE, &oq), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_q31(&q2, -3 * MDR_Q29_ONE, &oq2), MDR_OK);
+    assert_int_equal(oq.d, -2 * MDR_Q29_ONE);
+    assert_int_equal(oq.d, oq2.d);
+    assert_int_equal(mdr_engine_clear_flags_q31(&g.eq), MDR_FLAG_SAT);
+    assert_int_equal(mdr_engine_clear_flags_q31(&q2), MDR_FLAG_SAT);
+}
+
 /* q31: a separated machine far away gives a depth beyond Q2.29: it
  * saturates (never wraps) and sets the sticky MDR_FLAG_SAT; a machine too
  * soft for the formats (kappa = 2E* L/k_m > 2^16) is refused. */
@@ -917,6 +983,8 @@ int main(void)
         cmocka_unit_test(table_edges),
         cmocka_unit_test(energy_of_cycles),
         cmocka_unit_test(energy_overflow_f32),
+        cmocka_unit_test(band_after_jump_in),
+        cmocka_unit_test(separated_force_only),
         cmocka_unit_test(q31_saturation_and_limits),
         cmocka_unit_test(q31_flat_punch_units),
 #if MDR_CFG_PROFILE_SPHERE

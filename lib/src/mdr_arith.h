@@ -68,6 +68,8 @@
  * arithmetic: zero; finiteness (x - x is 0 unless x is inf or NaN; a sum of
  * finite terms is finite or overflows) */
 #define MDR_ZERO MDR_K(0.0)
+/* the lowest control a step takes (below: -inf, refused) */
+#define MDR_UMIN (-MDR_MAXV)
 #define MDR_FINITE(x) ((x) - (x) == MDR_K(0.0))
 #define MDR_FINITE4(a, b, c, d) MDR_FINITE((a) + (b) + (c) + (d))
 

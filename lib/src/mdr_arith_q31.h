@@ -26,6 +26,8 @@
 #define MDR_ZERO 0
 #define MDR_TINY 1
 #define MDR_MAXV INT32_MAX
+/* the lowest control a step takes as it is (beyond: saturated, MDR_FLAG_SAT) */
+#define MDR_UMIN (-2 * MDR_Q29_ONE)
 #define MDR_FINITE(x) ((void)(x), 1)
 #define MDR_FINITE4(a, b, c, d) ((void)(a), (void)(b), (void)(c), (void)(d), 1)
 
