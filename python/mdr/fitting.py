@@ -30,6 +30,7 @@ class FitResult:
     k_machine, z, F: what was fitted.
 
     model(): the fitted model's force at every sample (as `mdr fit --model`).
+    as_dict(): the JSON's fields as a dict.
     """
 
     def __init__(self, **kw):
@@ -49,10 +50,10 @@ class FitResult:
         and the index of the first retract sample (the last largest z). Up
         to top the approach branch (work of adhesion w_adv when it was
         fitted, else w), from top on the retract (w); both with the fitted
-        E*, z0, F_base and k_machine, computed in the fit's arithmetic
-        (mdr_fit_model). The approach must be monotonic in z for this
-        (else mdr.Error MDR_E_ORDER)."""
-        c = self._tip
+        E*, z0, F_base and k_machine, computed in f64 whatever the fit's
+        arithmetic (mdr_fit_model, as `mdr fit --model`). The approach must
+        be monotonic in z for this (else mdr.Error MDR_E_ORDER)."""
+        c = self._tip.replace(arith="f64")
         n = self._z.size
         work = ffi.new("%s[]" % c._T, lib.mdrpy_fit_work_len(n))
         Fm = np.empty(n)
