@@ -16,6 +16,7 @@ the claim. Each time is the best of REPEAT runs (the least disturbed).
    package's overhead per fit.
 
     /usr/bin/python3 python/bench.py [fit]  (after make python; fit: part 3 only)
+    /usr/bin/python3 python/bench.py fit --readme python/README.md   (part 3 into it)
 """
 import os
 import sys
@@ -145,23 +146,32 @@ def main():
     bench_fit()
 
 
+def into_readme(fn, path, marker):
+    """Run fn, print its output and put it into the file at path between
+    <!-- marker:begin --> and <!-- marker:end -->."""
+    import contextlib
+    import io
+
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        fn()
+    print(buf.getvalue(), end="")
+    with open(path) as f:
+        text = f.read()
+    begin, end = "<!-- %s:begin -->\n" % marker, "<!-- %s:end -->" % marker
+    i, j = text.index(begin) + len(begin), text.index(end)
+    with open(path, "w") as f:
+        md = "\n".join("**%s**" % ln[3:] if ln.startswith("## ") else ln for ln in buf.getvalue().splitlines())
+        f.write(text[:i] + "\n" + md.strip() + "\n\n" + text[j:])
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 3 and sys.argv[1] == "--readme":
         # the tables also into README.md between its python-bench markers
-        import contextlib
-        import io
-
-        buf = io.StringIO()
-        with contextlib.redirect_stdout(buf):
-            main()
-        print(buf.getvalue(), end="")
-        with open(sys.argv[2]) as f:
-            text = f.read()
-        begin, end = "<!-- python-bench:begin -->\n", "<!-- python-bench:end -->"
-        i, j = text.index(begin) + len(begin), text.index(end)
-        with open(sys.argv[2], "w") as f:
-            md = "\n".join("**%s**" % ln[3:] if ln.startswith("## ") else ln for ln in buf.getvalue().splitlines())
-            f.write(text[:i] + "\n" + md.strip() + "\n\n" + text[j:])
+        into_readme(main, sys.argv[2], "python-bench")
+    elif len(sys.argv) == 4 and sys.argv[1:3] == ["fit", "--readme"]:
+        # part 3 into python/README.md between its python-fit-bench markers
+        into_readme(bench_fit, sys.argv[3], "python-fit-bench")
     elif sys.argv[1:] == ["fit"]:
         bench_fit()
     else:
