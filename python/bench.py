@@ -12,8 +12,12 @@ the claim. Each time is the best of REPEAT runs (the least disturbed).
    measured in the same run by the same C loop (mdrpy_run) without arrays
    or events, and the fixed cost of a run (a 2-tick path). Goal: the run's
    time per tick beyond the fixed cost within 2x of the C step's.
+3. mdr.fit of a 1 000-point noisy retract (docs/fitting.md's scene) against
+   the C call it makes (mdrpy_fit_*) on buffers prepared once: the
+   package's overhead per fit.
 
-    /usr/bin/python3 python/bench.py      (after make python)
+    /usr/bin/python3 python/bench.py [fit]  (after make python; fit: part 3 only)
+    /usr/bin/python3 python/bench.py fit --readme python/README.md   (part 3 into it)
 """
 import os
 import sys
@@ -98,28 +102,78 @@ def bench_run():
           % (worst, "met" if worst <= 2 else "NOT MET"))
 
 
+def bench_fit():
+    print("## mdr.fit against the C fit kernel it calls\n")
+    print("The scene of docs/fitting.md's Speed (make bench-fit): paraboloid R = 20 nm, E* = 1 GPa, "
+          "w = 0.05 J/m^2, k_m = 0.2 N/m, an engine curve (1 024 springs) with a 1 000-point retract and "
+          "1 % noise; the C time is the same call (mdrpy_fit_*: mdr_fit_curve and the samples' "
+          "conversion) on buffers prepared once, measured in this run.\n")
+    print("| method | arith | C kernel, us | mdr.fit, us | overhead, us | mdr.fit / C |")
+    print("| --- | --- | --- | --- | --- | --- |")
+    R, E, w, k = 20e-9, 1e9, 0.05, 0.2
+    c = mdr.Contact("paraboloid", E=E, w=w, R=R)
+    run = mdr.Engine(c, springs=1024, w_adv=w, k_machine=k).run([-1e-8, 2e-8, -4e-8], control="machine",
+                                                                 steps_per_segment=1000)
+    top = int(np.argmax(run.z))
+    z, F = run.z[top:], run.F[top:]
+    F = F + 0.01 * float(np.max(np.abs(F))) * np.random.default_rng(1).standard_normal(F.size)
+    worst = 0.0
+    for method, arith in (("full", "f64"), ("full", "f32"), ("two-point", "f64")):
+        tip = mdr.Contact("paraboloid", E=1.0, w=0.0, R=R, arith=arith)
+        res = mdr.fit(z, F, tip, k_machine=k, method=method, arith=arith)
+        n = z.size
+        work = ffi.new("%s[]" % tip._T, lib.mdrpy_fit_work_len(n))
+        out, fail = ffi.new("mdrpy_fit_res *"), ffi.new("size_t *")
+        zp, Fp = ffi.from_buffer("double[]", z), ffi.from_buffer("double[]", F)
+        fn = getattr(lib, "mdrpy_fit_" + arith)
+        code = mdr.fitting.METHODS[method]
+
+        def kernel():
+            assert fn(tip._c, k, 0.3e-9, 0.0, 0.0, code, 0, zp, Fp, n, work, len(work), out, fail) == lib.MDR_OK
+        t_c = best(kernel)
+        t_py = best(lambda: mdr.fit(z, F, tip, k_machine=k, method=method, arith=arith))
+        assert out.E == res.E  # the same answer
+        worst = max(worst, t_py - t_c)
+        print("| %s | %s | %.0f | %.0f | %.1f | %.2f |" % (method, arith, t_c * 1e6, t_py * 1e6, (t_py - t_c) * 1e6,
+                                                          t_py / t_c))
+    print("\nmdr.fit's fixed overhead (argument checks, array copies, the result object, a Contact of the "
+          "fitted E*, w): at most %.0f us a call\n" % (worst * 1e6))
+
+
 def main():
     print("mdr %s, numpy %s, Python %s\n" % (mdr.__version__, np.__version__, sys.version.split()[0]))
     bench_eq()
     bench_run()
+    bench_fit()
+
+
+def into_readme(fn, path, marker):
+    """Run fn, print its output and put it into the file at path between
+    <!-- marker:begin --> and <!-- marker:end -->."""
+    import contextlib
+    import io
+
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        fn()
+    print(buf.getvalue(), end="")
+    with open(path) as f:
+        text = f.read()
+    begin, end = "<!-- %s:begin -->\n" % marker, "<!-- %s:end -->" % marker
+    i, j = text.index(begin) + len(begin), text.index(end)
+    with open(path, "w") as f:
+        md = "\n".join("**%s**" % ln[3:] if ln.startswith("## ") else ln for ln in buf.getvalue().splitlines())
+        f.write(text[:i] + "\n" + md.strip() + "\n\n" + text[j:])
 
 
 if __name__ == "__main__":
     if len(sys.argv) == 3 and sys.argv[1] == "--readme":
         # the tables also into README.md between its python-bench markers
-        import contextlib
-        import io
-
-        buf = io.StringIO()
-        with contextlib.redirect_stdout(buf):
-            main()
-        print(buf.getvalue(), end="")
-        with open(sys.argv[2]) as f:
-            text = f.read()
-        begin, end = "<!-- python-bench:begin -->\n", "<!-- python-bench:end -->"
-        i, j = text.index(begin) + len(begin), text.index(end)
-        with open(sys.argv[2], "w") as f:
-            md = "\n".join("**%s**" % ln[3:] if ln.startswith("## ") else ln for ln in buf.getvalue().splitlines())
-            f.write(text[:i] + "\n" + md.strip() + "\n\n" + text[j:])
+        into_readme(main, sys.argv[2], "python-bench")
+    elif len(sys.argv) == 4 and sys.argv[1:3] == ["fit", "--readme"]:
+        # part 3 into python/README.md between its python-fit-bench markers
+        into_readme(bench_fit, sys.argv[3], "python-fit-bench")
+    elif sys.argv[1:] == ["fit"]:
+        bench_fit()
     else:
         main()

@@ -10,6 +10,7 @@ firmware runs; cffi in API mode, compiled against the library's headers).
     eng = mdr.Engine(c, springs=1024, w_adv=0.025, k_machine=0.2)
     run = eng.run([0, 1e-6, -3e-6], control="machine", steps_per_segment=1000)
     mdr.plot.fd(run)                     # needs matplotlib
+    res = mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2)   # res.E, res.w, res.z0, ...
 
 SI units everywhere; compressive force and depth into the surface positive;
 w is the work of adhesion. Every refusal of the library raises mdr.Error
@@ -18,9 +19,10 @@ w is the work of adhesion. Every refusal of the library raises mdr.Error
 from ._core import Error, event_name, ffi, lib, status_text
 from .contact import PROFILES, Contact, Critical, EqState, Profile, State
 from .engine import Engine, Event, Run
+from .fitting import FitResult, fit
 
 __version__ = "%d.%d" % (lib.MDR_VERSION_MAJOR, lib.MDR_VERSION_MINOR)
-__all__ = ["Contact", "Engine", "Error", "Run", "Event", "EqState", "State", "Critical", "Profile", "PROFILES",
+__all__ = ["Contact", "Engine", "Error", "fit", "FitResult", "Run", "Event", "EqState", "State", "Critical", "Profile", "PROFILES",
            "plot", "status_text", "event_name", "ffi", "lib"]  # ffi, lib: the extension itself
 
 

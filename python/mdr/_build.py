@@ -66,7 +66,7 @@ STATUS_NAMES = [
     "MDR_E_OUTSIDE", "MDR_E_TABLE", "MDR_E_SIZE", "MDR_E_DISABLED", "MDR_E_FEW", "MDR_E_ORDER",
     "MDR_E_NOCONTACT", "MDR_E_NOPULLOFF", "MDR_E_FITCAP", "MDR_E_DEGENERATE", "MDR_E_JUMPS",
 ]
-PROFILE_NAMES = ["PARABOLOID", "CONE", "POWERLAW", "FLATPUNCH", "SPHERE", "FLATTIP", "WAVY"]
+PROFILE_NAMES = ["PARABOLOID", "CONE", "POWERLAW", "FLATPUNCH", "SPHERE", "FLATTIP", "WAVY", "TABLE"]
 EVENT_NAMES = ["NONE", "CONTACT", "JUMP_IN", "JUMP", "PULL_OFF", "RECONTACT", "SEPARATION"]
 CONSTANTS = (
     STATUS_NAMES
@@ -76,6 +76,8 @@ CONSTANTS = (
     + ["MDR_FLAG_OUTSIDE", "MDR_FLAG_NOCONV", "MDR_FLAG_SAT"]
     + ["MDR_SPRINGS_MIN", "MDR_SPRINGS_MAX", "MDR_TABLE_MIN_POINTS", "MDR_POWERLAW_N_MAX", "MDR_TABLE_BLOCK"]
     + ["MDR_VERSION_MAJOR", "MDR_VERSION_MINOR"]
+    + ["MDR_FIT_FULL", "MDR_FIT_TWO_POINT", "MDR_FIT_MIN_POINTS", "MDR_FIT_MIN_CONTACT", "MDR_FIT_ITER_MAX"]
+    + ["MDR_REGIME_JKR", "MDR_REGIME_TRANSITION", "MDR_REGIME_DMT"]
     + ["MDRPY_F32", "MDRPY_F64", "MDRPY_Q31", "MDRPY_MORE"]
     + ["MDRPY_EQ_" + c for c in ("A", "D", "F", "DD_DA", "DF_DA", "DL", "K_I", "G", "N")]
     + ["MDRPY_EQ_STABLE_LOAD", "MDRPY_EQ_STABLE_GRIPS", "MDRPY_EQ_NFLAGS"]
@@ -84,6 +86,10 @@ CONSTANTS = (
     + ["MDRPY_EV_" + c for c in ("A0", "D0", "F0", "A1", "D1", "F1", "N")]
 )
 
+# the double fields of mdrpy_fit_res (python/src/mdr_py.h), in its order
+FIT_DOUBLES = ("E", "w", "z0", "F_base", "E_err", "w_err", "z0_err", "F_base_err", "rms", "pull_off_F",
+               "pull_off_z", "a_pull_off", "mu", "R_mu", "w_adv", "w_adv_err")
+
 # structs: cffi lays them out ("...;"); the fields the package reads, each
 # (type, name), are checked by the compiler (CHECK below)
 STRUCTS = {
@@ -91,6 +97,9 @@ STRUCTS = {
     "mdrpy_engine": [],
     "mdrpy_info": [("double", f) for f in ("a", "d", "F", "dissipated", "last_cycle", "a_max", "L", "D0", "F0", "Z0")]
     + [("uint32_t", "cycles"), ("uint16_t", "springs"), ("uint8_t", "contact"), ("uint8_t", "flags")],
+    "mdrpy_fit_res": [("double", f) for f in FIT_DOUBLES]
+    + [("uint32_t", "n"), ("uint32_t", "n_approach"), ("uint16_t", "iterations"), ("uint8_t", "method"),
+       ("uint8_t", "regime")],
 }
 STRUCTS_T = {
     "mdr_contact_{S}": [],
@@ -103,6 +112,8 @@ DECLS = """
 typedef int8_t mdr_status;
 const char *mdr_status_str(mdr_status s);
 const char *mdr_event_str(uint8_t event);
+const char *mdr_regime_str(uint8_t regime);
+size_t mdrpy_fit_work_len(size_t n);
 double mdr_host_path_value(const double *path, long steps, long seg, long j);
 mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
                         uint8_t control, double k_m, const double *path, size_t npath,
@@ -137,6 +148,14 @@ mdr_status mdrpy_stress_{S}(const mdr_contact_{S} *c, size_t n, const double *a,
                             const double *r, double *sigma, size_t *fail);
 mdr_status mdrpy_profile_{S}(const mdr_contact_{S} *c, size_t n, const double *x, double *out,
                              size_t *fail);
+mdr_status mdrpy_contact_tip_{S}(mdr_contact_{S} *c, const double *r, const double *f, uint16_t m, double E,
+                                 double w, double *s, {T} *buf);
+mdr_status mdrpy_fit_{S}(const mdr_contact_{S} *tip, double k_m, double z_e, double E0, double w0,
+                         uint8_t method, uint8_t approach, const double *z, const double *F, uint32_t n,
+                         {T} *work, size_t work_len, mdrpy_fit_res *o, size_t *fail);
+mdr_status mdrpy_fit_model_{S}(const mdr_contact_{S} *tip, double k_m, const mdrpy_fit_res *res,
+                               double w_approach, const double *z, uint32_t n, {T} *work, size_t work_len,
+                               double *Fm, uint32_t *top);
 """
 ARITHS = (("float", "f32"), ("double", "f64"))
 

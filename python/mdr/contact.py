@@ -74,21 +74,32 @@ class Contact:
     Profiles and their parameters [SI]: paraboloid R; cone theta [rad];
     powerlaw C n (f = C r^n); flatpunch a0; sphere R (exact sphere);
     flattip R b (paraboloid flattened for r < b); wavy R h lam (paraboloid
-    with a radial waveform of amplitude h, wavelength lam).
+    with a radial waveform of amplitude h, wavelength lam); table r f: a
+    sampled (measured or worn) tip, gap heights f [m] at radii r [m] (1-D
+    arrays, r[0] = 0, strictly increasing, 3 ... 65535 samples; f' linear on
+    each interval, the slopes formed in double as `mdr ... --profile table`
+    forms them, so the CLI and Python build the same contact). The contact
+    keeps read-only copies of r and f (attributes r, f; the C contact points
+    into storage this object holds).
     E is the effective modulus E* [Pa], w the work of adhesion [J/m^2].
     arith: "f64" (double, default) or "f32" (float, what an FPU firmware
     computes). A parameter the library refuses raises mdr.Error.
     """
 
     def __init__(self, profile, *, E, w, arith="f64", **params):
-        if profile == "table":
-            raise NotImplementedError(
-                "Contact('table', r=..., f=...): sampled tips reach the contact module in a later "
-                "version; the spring engine takes them now: mdr.Engine.from_tip(r, f, E=..., w=...)")
-        if profile not in PROFILES:
-            raise Error(lib.MDR_E_KIND, "Contact(%r): profiles are %s" % (profile, ", ".join(PROFILES)))
+        if profile != "table" and profile not in PROFILES:
+            raise Error(lib.MDR_E_KIND, "Contact(%r): profiles are %s, table" % (profile, ", ".join(PROFILES)))
         if arith not in ("f32", "f64"):
             raise ValueError("Contact: arith must be 'f32' or 'f64', not %r" % (arith,))
+        self._f = {name: getattr(lib, "%s_%s" % (name, arith)) for name in (
+            "mdr_contact_init", "mdr_critical", "mdr_default_start", "mdrpy_eq", "mdrpy_state",
+            "mdrpy_stress", "mdrpy_profile", "mdrpy_contact_tip")}
+        self._T = "float" if arith == "f32" else "double"
+        self.arith = arith
+        self._c = ffi.new("mdr_contact_%s *" % arith)
+        if profile == "table":
+            self._init_table(E, w, params)
+            return
         kind, names = PROFILES[profile]
         missing = [n for n in names if n not in params]
         extra = [n for n in params if n not in names]
@@ -98,22 +109,61 @@ class Contact:
                 "; unexpected " + ", ".join(extra) if extra else ""))
         self.profile = profile
         self.kind = kind
-        self.arith = arith
         vals = narrow(arith, "Contact(%r)" % profile, E=E, w=w, **{n: params[n] for n in names})
         self.E, self.w = vals[:2]
         self.params = dict(zip(names, vals[2:]))
-        self._T = "float" if arith == "f32" else "double"
-        self._f = {name: getattr(lib, "%s_%s" % (name, arith)) for name in (
-            "mdr_contact_init", "mdr_critical", "mdr_default_start", "mdrpy_eq", "mdrpy_state",
-            "mdrpy_stress", "mdrpy_profile")}
         p = [self.params[n] for n in names] + [0.0] * (3 - len(names))
         self.p = tuple(p)
-        self._c = ffi.new("mdr_contact_%s *" % arith)
+        self.r = self.f = None
         check(self._f["mdr_contact_init"](self._c, kind, p, self.E, self.w),
               "Contact(%r, %s)" % (profile, self._args()))
 
+    def _init_table(self, E, w, params):
+        """Contact("table", r=..., f=...): the samples' slopes formed in
+        double (mdrpy_contact_tip, as the CLI), r and the slopes converted
+        into storage this object keeps (the C contact points into it)."""
+        if sorted(params) != ["f", "r"]:
+            raise TypeError("Contact('table') takes E, w, r, f (arrays of the radii and gap heights)%s" % (
+                "; unexpected " + ", ".join(sorted(set(params) - {"r", "f"})) if set(params) - {"r", "f"} else
+                "; missing " + ", ".join(sorted({"r", "f"} - set(params)))))
+        # copies: the contact must not change when the caller's arrays do
+        r = np.array(params["r"], dtype=np.float64).copy(order="C")
+        f = np.array(params["f"], dtype=np.float64).copy(order="C")
+        if r.ndim != 1 or r.shape != f.shape or r.size > 65535:
+            raise Error(lib.MDR_E_TABLE, "Contact('table'): r and f must be 1-D arrays of one length "
+                        "%d ... 65535 (got shapes %s and %s)" % (lib.MDR_TABLE_MIN_POINTS, r.shape, f.shape))
+        self.E, self.w = narrow(self.arith, "Contact('table')", E=E, w=w)
+        self.profile = "table"
+        self.kind = lib.MDR_PROFILE_TABLE
+        self.params = {}
+        self.p = (0.0, 0.0, 0.0)
+        r.flags.writeable = False
+        f.flags.writeable = False
+        self.r, self.f = r, f
+        m = r.size
+        self._slopes = ffi.new("double[]", max(m - 1, 1))
+        self._buf = ffi.new("%s[]" % self._T, max(2 * m, 1))  # the contact points into it
+        st = self._f["mdrpy_contact_tip"](self._c, dptr(r), dptr(f), m, self.E, self.w, self._slopes, self._buf)
+        if st != lib.MDR_OK:
+            raise Error(st, "Contact('table', %s)" % self._args(), hint=_table_hint(st, r, f))
+
     def _args(self):
+        if self.profile == "table":
+            return "E=%.9g, w=%.9g, %d samples to r=%.9g" % (self.E, self.w, self.r.size,
+                                                              self.r[-1] if self.r.size else float("nan"))
         return ", ".join(["E=%.9g" % self.E, "w=%.9g" % self.w] + ["%s=%.9g" % kv for kv in self.params.items()])
+
+    def replace(self, *, E=None, w=None, arith=None):
+        """The same profile (and samples) with another E*, w or arithmetic
+        ("f32", "f64"): a new Contact (self when nothing changes)."""
+        E = self.E if E is None else E
+        w = self.w if w is None else w
+        arith = self.arith if arith is None else arith
+        if (E, w, arith) == (self.E, self.w, self.arith):
+            return self
+        if self.profile == "table":
+            return Contact("table", E=E, w=w, arith=arith, r=self.r, f=self.f)
+        return Contact(self.profile, E=E, w=w, arith=arith, **self.params)
 
     def __repr__(self):
         return "mdr.Contact(%r, %s, arith=%r)" % (self.profile, self._args(), self.arith)
@@ -194,3 +244,21 @@ class Contact:
         return Critical(a=float(out.a), d=float(out.d), F=float(out.F), jumps=int(out.jumps), control=control,
                         k_machine=k_machine, a_start=float(a_start))
 
+
+def _table_hint(st, r, f):
+    """What is wrong with the samples, for the messages of MDR_E_TABLE and
+    MDR_E_NONFINITE."""
+    if st == lib.MDR_E_NONFINITE:
+        bad = np.flatnonzero(~(np.isfinite(r) & np.isfinite(f)))
+        if bad.size:
+            return "sample %d: r = %.9g, f = %.9g" % (bad[0], r[bad[0]], f[bad[0]])
+    if st == lib.MDR_E_TABLE:
+        if r.size < lib.MDR_TABLE_MIN_POINTS:
+            return "%d samples (at least %d)" % (r.size, lib.MDR_TABLE_MIN_POINTS)
+        if r[0] != 0:
+            return "r[0] = %.9g (must be 0)" % r[0]
+        bad = np.flatnonzero(~(np.diff(r) > 0))
+        if bad.size:
+            return "r not strictly increasing at sample %d (r = %.9g after %.9g)" % (bad[0] + 1, r[bad[0] + 1],
+                                                                                    r[bad[0]])
+    return ""

@@ -64,7 +64,9 @@ class Engine:
     a_max: table extent [m]; None: chosen at the first run() as `mdr cycle`
     does (1.25 x the radius where the equilibrium curve reaches the path's
     largest value), so errors of the table or of the engine's parameters
-    appear there. A sampled tip: Engine.from_tip(r, f, E=..., w=...).
+    appear there. A sampled tip: Engine(mdr.Contact("table", r=..., f=...,
+    E=..., w=...)) or Engine.from_tip(r, f, E=..., w=...), the same table
+    (to the last sample r[-1]; a_max is not taken).
     An Engine holds state: run it from one thread at a time (the C loop
     runs without the GIL); Contacts are read-only and may be shared.
     """
@@ -76,7 +78,12 @@ class Engine:
         self.contact = contact
         self.tip = None
         self.a_max = None
-        if a_max is not None:
+        if contact.profile == "table":
+            if a_max is not None:
+                raise TypeError("Engine(Contact('table', ...)): the table extends to the last sample r[-1]; "
+                                "a_max is not taken")
+            self._init_tip(contact.r, contact.f, "Engine(Contact('table'))")
+        elif a_max is not None:
             self._build(float(a_max))
 
     @classmethod
@@ -89,21 +96,24 @@ class Engine:
         E [Pa], w [J/m^2] and the rest as Engine()."""
         self = cls.__new__(cls)
         self._setup(E, w, springs, w_adv, k_machine, arith)
+        self.contact = None
+        self._init_tip(r, f, "Engine.from_tip")
+        return self
+
+    def _init_tip(self, r, f, what):
         r = np.ascontiguousarray(r, dtype=np.float64)
         f = np.ascontiguousarray(f, dtype=np.float64)
         if r.ndim != 1 or r.shape != f.shape or r.size > 65535:
-            raise Error(lib.MDR_E_TABLE, "Engine.from_tip: r and f must be 1-D arrays of one length "
-                        "<= 65535 (got %s and %s)" % (r.shape, f.shape))
-        self.contact = None
+            raise Error(lib.MDR_E_TABLE, "%s: r and f must be 1-D arrays of one length "
+                        "<= 65535 (got %s and %s)" % (what, r.shape, f.shape))
         self.tip = (r, f)
         self.a_max = float(r[-1]) if r.size else None
         self._x = ffi.new("mdrpy_engine *")
         nodes = self._alloc()
         check(lib.mdrpy_engine_tip(self._x, self._arith, dptr(r), dptr(f), r.size, self.E, self.w, self.w_adv,
                                    self.k_machine, self.springs, *nodes),
-              "Engine.from_tip(%d points, springs=%d, arith=%r)" % (r.size, self.springs, self.arith))
+              "%s(%d points, springs=%d, arith=%r)" % (what, r.size, self.springs, self.arith))
         self._nodes = nodes
-        return self
 
     def _setup(self, E, w, springs, w_adv, k_machine, arith):
         if arith not in ARITHS:

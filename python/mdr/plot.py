@@ -5,6 +5,7 @@ function here is called).
     ax = mdr.plot.fd(run)                  # F-d, nm and nN
     ax = mdr.plot.fd(run, x="z", contact=c)   # F-z with the equilibrium curve
     ax.figure.savefig("cycle.png")
+    ax = mdr.plot.fit(mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2))   # data and fitted model
 """
 import numpy as np
 
@@ -98,6 +99,48 @@ def fd(run, x=None, ax=None, contact=None, length_unit="nm", force_unit="nN", la
                             color=colour)
     ax.axhline(0, color="0.8", lw=0.6, zorder=0)
     ax.set_xlabel("%s [%s]" % ("base position z" if x == "z" else "indentation d", _LABEL.get(length_unit, length_unit)))
+    ax.set_ylabel("force F [%s]" % _LABEL.get(force_unit, force_unit))
+    ax.legend(fontsize=8, loc="best")
+    return ax
+
+
+def fit(res, ax=None, length_unit="nm", force_unit="nN", label=None, data=True, **line_kw):
+    """Plot a force curve and the model fitted to it (an mdr.fit result):
+    the samples F(z) as dots, the model (FitResult.model(): approach and
+    retract branches) as a line, the model's pull-off marked with its force
+    (relative to the baseline F_base, as FitResult.pull_off_F).
+
+    ax: matplotlib Axes (default: a new figure); data: also draw the
+    samples (False to overlay a second fit on the same data); label: the
+    model's legend entry (default: its E*, w); line_kw: passed to the
+    model's plot(). Returns the Axes."""
+    lu, fu = LENGTH_UNITS[length_unit], FORCE_UNITS[force_unit]
+    plt = _pyplot()
+    if ax is None:
+        ax = plt.figure(figsize=(7, 4.5)).add_subplot()
+    Fm, top = res.model()
+    if data:
+        ax.plot(res.z / lu, res.F / fu, ".", ms=2, color="0.6", label="data (%d points)" % res.z.size)
+    if label is None:
+        label = "fit (%s): E* = %.4g GPa, w = %.4g mJ/m\u00b2" % (res.contact.profile, res.E / 1e9, res.w * 1e3)
+    # the model jumps in on the approach and off at its fold on the retract:
+    # the line broken at each branch's largest step
+    zs, Fs = [], []
+    for lo, hi in ((0, top), (top, res.z.size)):
+        zb, Fb = res.z[lo:hi], Fm[lo:hi]
+        j = int(np.argmax(np.abs(np.diff(Fb)))) + 1 if Fb.size > 1 else 0
+        zs += [zb[:j], [np.nan], zb[j:], [np.nan]]
+        Fs += [Fb[:j], [np.nan], Fb[j:], [np.nan]]
+    zs, Fs = np.concatenate(zs), np.concatenate(Fs)
+    line_kw.setdefault("zorder", 3)  # over the data
+    line = ax.plot(zs / lu, Fs / fu, label=label, **line_kw)[0]
+    F0 = (res.pull_off_F + res.F_base) / fu
+    ax.plot([res.pull_off_z / lu], [F0], "v", color=line.get_color(), ms=7)
+    ax.annotate("pull-off %.4g %s" % (res.pull_off_F / fu, _LABEL.get(force_unit, force_unit)),
+                (res.pull_off_z / lu, F0), textcoords="offset points", xytext=(8, -4), va="center", fontsize=8,
+                color=line.get_color())
+    ax.axhline(res.F_base / fu, color="0.8", lw=0.6, zorder=0)
+    ax.set_xlabel("base position z [%s]" % _LABEL.get(length_unit, length_unit))
     ax.set_ylabel("force F [%s]" % _LABEL.get(force_unit, force_unit))
     ax.legend(fontsize=8, loc="best")
     return ax

@@ -15,6 +15,15 @@
 #define MDR_TEMPLATE "mdr_py_t.inc"
 #include "mdr_each_arith.h"
 
+size_t mdrpy_fit_work_len(size_t n)
+{
+    const size_t max = (size_t)-1;
+    if (n > max / 4u) {
+        return 0;
+    }
+    return 2u * n + MDR_FIT_WORK_LEN(n);
+}
+
 /* the q31 table from the f64 one and the double init, as `mdr cycle` */
 static mdr_status mdrpy_init(mdrpy_engine *x, mdr_node_q31 *nq)
 {

@@ -94,6 +94,28 @@ typedef struct {
     uint8_t flags;         /**< sticky MDR_FLAG_* */
 } mdrpy_info;
 
+/** Result of mdrpy_fit_*() in double (mdr_fit_result of either arithmetic,
+ *  widened exactly; fields as there). */
+typedef struct {
+    double E, w, z0, F_base;                 /**< [Pa, J/m^2, m, N] */
+    double E_err, w_err, z0_err, F_base_err; /**< standard errors, same units */
+    double rms;                              /**< rms residual [N] */
+    double pull_off_F, pull_off_z, a_pull_off; /**< model's pull-off [N, m, m] */
+    double mu, R_mu;                         /**< Tabor parameter [1], its radius [m] */
+    double w_adv, w_adv_err;                 /**< approach (n_approach > 0) [J/m^2] */
+    uint32_t n, n_approach;                  /**< points used */
+    uint16_t iterations;                     /**< Levenberg-Marquardt iterations */
+    uint8_t method, regime;                  /**< MDR_FIT_*, MDR_REGIME_* */
+} mdrpy_fit_res;
+
+/**
+ * @brief Workspace of mdrpy_fit_*() and mdrpy_fit_model_*() for a curve of
+ *        n points, in elements of the arithmetic: the samples converted
+ *        (2 n) and the kernel's MDR_FIT_WORK_LEN(n).
+ * @return the length, or 0 when it overflows size_t
+ */
+size_t mdrpy_fit_work_len(size_t n);
+
 /* ---- contacts: one set per floating arithmetic (mdr_py_t.h) ---- */
 #define MDR_TEMPLATE "mdr_py_t.h"
 #include "mdr_each_arith.h"

@@ -39,3 +39,53 @@ mdr_status MDR_SFX(mdrpy_stress)(const MDR_SFX(mdr_contact) *c, size_t n, const 
  */
 mdr_status MDR_SFX(mdrpy_profile)(const MDR_SFX(mdr_contact) *c, size_t n, const double *x,
                                   double *out, size_t *fail);
+
+/**
+ * @brief Contact of a sampled gap profile f(r_i) [m] at radii r_i [m], m
+ *        points, as `mdr cycle/fit --profile table` builds it: the interval
+ *        slopes formed in double (tip_slopes(), examples/tip_csv.h), the
+ *        radii and slopes converted into buf (mdr_host_tip_contact(),
+ *        mdr_contact_init_table_*).
+ * @param s    caller scratch of max(m - 1, 1) doubles (the slopes)
+ * @param buf  caller storage of max(2 m, 1) values; the contact points into
+ *             it: it must outlive the contact
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE (an r or f not finite),
+ *         MDR_E_TABLE (r not strictly increasing, or m), MDR_E_OVERFLOW (a
+ *         radius or slope beyond the arithmetic), or the status of
+ *         mdr_contact_init_table_* (c untouched unless MDR_OK)
+ */
+mdr_status MDR_SFX(mdrpy_contact_tip)(MDR_SFX(mdr_contact) *c, const double *r, const double *f,
+                                      uint16_t m, double E, double w, double *s, MDR_T *buf);
+
+/**
+ * @brief mdr_fit_curve() on n samples (z[i] [m], F[i] [N]) given in
+ *        double: converted to the arithmetic (a finite value beyond it is
+ *        MDR_E_OVERFLOW, *fail its index), the options set as documented in
+ *        mdr_fit_t.h (mdr_fit_defaults(), then k_m, z_e, E0, w0, method,
+ *        approach), the result widened into *o.
+ * @param tip   the profile (its E*, w unused)
+ * @param work  mdrpy_fit_work_len(n) elements, caller's
+ * @param[out] fail  index of the sample refused in the conversion (written
+ *             only then)
+ * @return MDR_OK or the status of mdr_fit_curve() (o written only on MDR_OK)
+ */
+mdr_status MDR_SFX(mdrpy_fit)(const MDR_SFX(mdr_contact) *tip, double k_m, double z_e, double E0,
+                              double w0, uint8_t method, uint8_t approach, const double *z,
+                              const double *F, uint32_t n, MDR_T *work, size_t work_len,
+                              mdrpy_fit_res *o, size_t *fail);
+
+/**
+ * @brief The fitted model beside the data, as `mdr fit --model`: up to the
+ *        last largest z the approach branch with w_approach (w_adv when it
+ *        was fitted, else w), from there the retract with w, both with E*,
+ *        z0 and F_b of *res (mdr_fit_model()).
+ * @param tip   the profile (copied: its material is changed on the copy)
+ * @param work  mdrpy_fit_work_len(n) elements, caller's
+ * @param Fm    n model forces [N]; written only on MDR_OK
+ * @param[out] top  index of the first retract sample
+ * @return MDR_OK, MDR_E_OVERFLOW (a sample beyond the arithmetic), or the
+ *         status of mdr_contact_material() or mdr_fit_model()
+ */
+mdr_status MDR_SFX(mdrpy_fit_model)(const MDR_SFX(mdr_contact) *tip, double k_m, const mdrpy_fit_res *res,
+                                    double w_approach, const double *z, uint32_t n, MDR_T *work,
+                                    size_t work_len, double *Fm, uint32_t *top);

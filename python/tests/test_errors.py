@@ -66,8 +66,10 @@ def test_contact_argument_errors():
         mdr.Contact("paraboloid", R=1e-6)  # E and w are required
     with pytest.raises(ValueError, match="arith"):
         mdr.Contact("paraboloid", R=1e-6, arith="q31", **P)
-    with pytest.raises(NotImplementedError, match="from_tip"):
+    with pytest.raises(mdr.Error, match="at least 3"):  # sampled tips: tests/test_table.py
         mdr.Contact("table", r=[0, 1e-6], f=[0, 1e-9], **P)
+    with pytest.raises(TypeError, match="missing f"):
+        mdr.Contact("table", r=[0, 1e-6, 2e-6], **P)
 
 
 @pytest.mark.parametrize("arith", ["f64", "f32"])

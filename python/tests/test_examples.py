@@ -43,3 +43,20 @@ def test_docs_quick_start(tmp_path, monkeypatch):
     scope = {}
     exec(compile(block, "docs/python.md (Python quick start)", "exec"), scope)
     assert scope["s"].F < 0 and scope["run"].pull_off is not None and (tmp_path / "cycle.png").exists()
+
+
+def test_fit_curve_example(tmp_path):
+    """examples/fit_curve.py: both fits of its noisy worn-tip curve find E*
+    and w within 3 of their standard errors (1 % noise: E* to about 4 %),
+    and the plot is written."""
+    out = tmp_path / "fit.png"
+    env = dict(os.environ, PYTHONPATH=PKG, MPLBACKEND="Agg")
+    p = subprocess.run([sys.executable, os.path.join(ROOT, "examples", "fit_curve.py"), str(out)],
+                       env=env, capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    rows = re.findall(r"^(paraboloid R = 20 nm|worn tip \(samples\)) +E\* = (\S+) \+- (\S+) Pa, w = (\S+) \+- (\S+) J",
+                      p.stdout, re.M)
+    assert len(rows) == 2, p.stdout
+    for _, E, dE, w, dw in rows:
+        assert abs(float(E) - 1e9) < 3 * float(dE) and abs(float(w) - 0.05) < 3 * float(dw), p.stdout
+    assert out.stat().st_size > 20000

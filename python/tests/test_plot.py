@@ -54,3 +54,28 @@ def test_import_mdr_does_not_import_matplotlib():
     code = "import sys; import mdr; print('matplotlib' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], cwd=PKG, capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
+
+
+def test_fit_plot_draws_data_model_and_pull_off():
+    """mdr.plot.fit: the samples, the fitted model (FitResult.model(), broken
+    at the jump-in and at the pull-off) and the pull-off marked at the
+    model's (pull_off_z, pull_off_F + F_base)."""
+    os.makedirs(OUT, exist_ok=True)
+    c = mdr.Contact("paraboloid", E=1e9, w=0.05, R=20e-9)
+    run = mdr.Engine(c, springs=1024, w_adv=0.05, k_machine=0.2).run([-1e-8, 2e-8, -4e-8], control="machine",
+                                                                    steps_per_segment=1000)
+    res = mdr.fit(run.z + 1e-6, run.F + 2e-10, "paraboloid", R=20e-9, k_machine=0.2, approach=True)
+    ax = mdr.plot.fit(res)
+    ax.figure.savefig(os.path.join(OUT, "fit.png"), dpi=80)
+    data, model = ax.get_lines()[:2]
+    assert np.array_equal(data.get_data()[0], res.z / 1e-9) and np.array_equal(data.get_data()[1], res.F / 1e-9)
+    Fm, top = res.model()
+    xm, ym = (np.asarray(v, dtype=float) for v in model.get_data())
+    assert np.isnan(xm).sum() == 4 and np.array_equal(ym[~np.isnan(ym)], Fm / 1e-9)
+    po = [(res.pull_off_z / 1e-9, (res.pull_off_F + res.F_base) / 1e-9)]
+    assert np.allclose(marked(ax, model.get_color()), po, rtol=1e-12)
+    # the line breaks at the model's pull-off: the last contact point lies at the marker's z
+    brk = np.flatnonzero(np.isnan(xm))[2]
+    assert abs(xm[brk - 1] - po[0][0]) < 0.1 and "pull-off" in ax.texts[0].get_text()
+    ax2 = mdr.plot.fit(res, ax=ax, data=False, label="again")
+    assert ax2 is ax and len(ax.get_lines()) == 7  # data, model, marker, baseline; model, marker, baseline

@@ -1,0 +1,170 @@
+"""mdr.fit: from a measured force curve to E*, w, the contact point z0 and the
+force baseline, over libmdr's fit kernel (lib/include/mdr_fit.h,
+mdr_fit_t.h; docs/fitting.md), the same C code as `mdr fit --curve`.
+"""
+import numpy as np
+
+from ._build import FIT_DOUBLES
+from ._core import Error, dptr, ffi, lib, narrow
+from .contact import Contact
+
+METHODS = {"full": lib.MDR_FIT_FULL, "two-point": lib.MDR_FIT_TWO_POINT}
+_METHOD_NAMES = {v: k for k, v in METHODS.items()}
+Z_E_DEFAULT = 0.3e-9  # MDR_FIT_Z_E_DEFAULT (python/tests/test_fit.py checks it against the header)
+
+
+class FitResult:
+    """The result of mdr.fit(): the keys of `mdr fit --curve`'s JSON as
+    attributes (SI units).
+
+    E [Pa], w [J/m^2], z0 [m] (base position of first touch at zero force),
+    F_base [N] (force baseline), E_err, w_err, z0_err, F_base_err (one
+    standard error each), mu (Tabor parameter), R_mu [m] (the tip radius in
+    mu), z_e [m], regime ("JKR", "transition", "DMT"), rms [N] (residual),
+    pull_off_F [N] (the model's pull-off force relative to the baseline,
+    negative), pull_off_z [m], a_pull_off [m] (contact radius at pull-off),
+    n (retract points used), method ("full", "two-point"), iterations
+    (Levenberg-Marquardt; 0 for two-point), arith; with approach=True also
+    w_adv, w_adv_err [J/m^2] and n_approach (else w_adv is None).
+    contact: the profile fitted (an mdr.Contact with the fitted E*, w);
+    k_machine, z, F: what was fitted.
+
+    model(): the fitted model's force at every sample (as `mdr fit --model`).
+    as_dict(): the JSON's fields as a dict.
+    """
+
+    def __init__(self, **kw):
+        self.__dict__.update(kw)
+
+    def as_dict(self):
+        """The JSON fields of `mdr fit --curve` (without status) as a dict."""
+        keys = ["E", "w", "z0", "F_base", "E_err", "w_err", "z0_err", "F_base_err", "mu", "R_mu", "z_e", "regime",
+                "rms", "pull_off_F", "pull_off_z", "a_pull_off"]
+        if self.n_approach:
+            keys += ["w_adv", "w_adv_err", "n_approach"]
+        keys += ["n", "method", "iterations", "arith"]
+        return {k: getattr(self, k) for k in keys}
+
+    def model(self):
+        """(F_model, top): the fitted model at every sample z of the fit [N],
+        and the index of the first retract sample (the last largest z). Up
+        to top the approach branch (work of adhesion w_adv when it was
+        fitted, else w), from top on the retract (w); both with the fitted
+        E*, z0, F_base and k_machine, computed in f64 whatever the fit's
+        arithmetic (mdr_fit_model, as `mdr fit --model`). The approach must
+        be monotonic in z for this (else mdr.Error MDR_E_ORDER)."""
+        c = self._tip.replace(arith="f64")
+        n = self._z.size
+        work = ffi.new("%s[]" % c._T, lib.mdrpy_fit_work_len(n))
+        Fm = np.empty(n)
+        top = ffi.new("uint32_t *")
+        w_app = self.w_adv if self.n_approach else self.w
+        st = getattr(lib, "mdrpy_fit_model_" + c.arith)(c._c, self.k_machine, self._res, w_app, dptr(self._z), n,
+                                                         work, len(work), dptr(Fm), top)
+        if st != lib.MDR_OK:
+            raise Error(st, "FitResult.model")
+        return Fm, int(top[0])
+
+    def __repr__(self):
+        s = "<mdr.FitResult %s %s: E = %.6g +- %.2g Pa, w = %.6g +- %.2g J/m^2, z0 = %.9g m, F_base = %.6g N" % (
+            self.method, self.arith, self.E, self.E_err, self.w, self.w_err, self.z0, self.F_base)
+        if self.n_approach:
+            s += ", w_adv = %.6g J/m^2" % self.w_adv
+        return s + ", mu = %.3g (%s), %d points>" % (self.mu, self.regime, self.n)
+
+
+def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", E0=None, w0=None,
+        approach=False, **params):
+    """Fit E*, w, the contact point z0 and the baseline F_base to a force
+    curve (libmdr's mdr_fit_curve: the same code as `mdr fit --curve`).
+
+    z, F: 1-D arrays of one length, the curve in time order: z the base
+        (piezo) position [m], increasing toward the sample; F the force [N],
+        compressive positive (the cantilever's stiffness times its
+        deflection). The curve may hold the approach and the retract; the
+        retract is the part from the last largest z on (it must not
+        increase).
+    c_or_profile: an mdr.Contact (its profile; its E* and w are not used)
+        or a profile name with its parameters as keywords, as mdr.Contact
+        takes them (mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2);
+        "table" with r=, f=). Every profile but the flat punch.
+    k_machine: the cantilever (machine) stiffness [N/m], > 0.
+    method: "full" (Levenberg-Marquardt over every retract point, started
+        from the two-point method or E0, w0) or "two-point" (the pull-off
+        force and the zero-force point only).
+    z_e: equilibrium distance of the Tabor parameter [m] (default 0.3e-9).
+    arith: "f64" (default) or "f32" (what firmware computes).
+    E0, w0: first guesses [Pa, J/m^2], both or neither.
+    approach: also fit w_adv to the approach part (E*, z0, F_base held).
+
+    Returns a FitResult. A curve or an argument the library refuses raises
+    mdr.Error with its status: MDR_E_FEW (too few points), MDR_E_NOCONTACT,
+    MDR_E_NOPULLOFF (never separates), MDR_E_ORDER (z increases within the
+    retract), MDR_E_NONFINITE (a NaN or inf sample, .index its position),
+    MDR_E_PARAM (k_machine, z_e, E0/w0), MDR_E_KIND (flat punch),
+    MDR_E_FITCAP, MDR_E_DEGENERATE, MDR_E_JUMPS, MDR_E_RADIUS, ...
+    """
+    if arith not in ("f32", "f64"):
+        raise ValueError("fit: arith must be 'f32' or 'f64', not %r" % (arith,))
+    if method not in METHODS:
+        raise Error(lib.MDR_E_PARAM, "fit: method %r (full or two-point)" % (method,))
+    if (E0 is None) != (w0 is None):
+        raise Error(lib.MDR_E_PARAM, "fit: E0 and w0 go together (first guesses of both, or neither)")
+    if isinstance(c_or_profile, Contact):
+        if params:
+            raise TypeError("fit: profile parameters (%s) go with a profile name, not with an mdr.Contact"
+                            % ", ".join(sorted(params)))
+        tip = c_or_profile.replace(arith=arith)
+    elif isinstance(c_or_profile, str):
+        tip = Contact(c_or_profile, E=1.0, w=0.0, arith=arith, **params)  # E*, w unused (as mdr fit)
+    else:
+        raise TypeError("fit: c_or_profile must be an mdr.Contact or a profile name, not %r" % (c_or_profile,))
+    z = np.array(z, dtype=np.float64).copy(order="C")
+    F = np.array(F, dtype=np.float64).copy(order="C")
+    if z.ndim != 1 or z.shape != F.shape:
+        raise Error(lib.MDR_E_PARAM, "fit: z and F must be 1-D arrays of one length (got shapes %s and %s)"
+                    % (z.shape, F.shape))
+    n = z.size
+    if n > 2**31 - 1:
+        raise Error(lib.MDR_E_SIZE, "fit: %d samples (at most 2^31 - 1)" % n)
+    z_e = Z_E_DEFAULT if z_e is None else z_e
+    k, ze, e0, ww0 = narrow(arith, "fit", k_machine=k_machine, z_e=z_e, E0=0.0 if E0 is None else E0,
+                            w0=0.0 if w0 is None else w0)
+    work = ffi.new("%s[]" % tip._T, max(lib.mdrpy_fit_work_len(n), 1))
+    res = ffi.new("mdrpy_fit_res *")
+    fail = ffi.new("size_t *", n)
+    st = getattr(lib, "mdrpy_fit_" + arith)(tip._c, k, ze, e0, ww0, METHODS[method], 1 if approach else 0, dptr(z),
+                                            dptr(F), n, work, len(work), res, fail)
+    if st != lib.MDR_OK:
+        raise _fit_error(st, z, F, fail[0] if fail[0] < n else None, method, arith)
+    out = {f: float(getattr(res, f)) for f in FIT_DOUBLES}
+    if not res.n_approach:
+        out["w_adv"] = out["w_adv_err"] = None
+    fitted = tip.replace(E=out["E"], w=out["w"])
+    return FitResult(**out, n=int(res.n), n_approach=int(res.n_approach), iterations=int(res.iterations),
+                     method=_METHOD_NAMES[res.method], regime=ffi.string(lib.mdr_regime_str(res.regime)).decode(),
+                     z_e=float(ze), arith=arith, k_machine=float(k), contact=fitted, z=z, F=F, _tip=tip, _z=z,
+                     _res=res)
+
+
+def _fit_error(st, z, F, i, method, arith):
+    """mdr.Error of a refused fit, naming the sample where there is one."""
+    where = "fit(%d samples, method=%r, arith=%r)" % (z.size, method, arith)
+    if st == lib.MDR_E_NONFINITE and i is None:
+        bad = np.flatnonzero(~(np.isfinite(z) & np.isfinite(F)))
+        i = int(bad[0]) if bad.size else None
+    if st == lib.MDR_E_ORDER and i is None:
+        top = z.size - 1 - int(np.argmax(z[::-1]))
+        up = np.flatnonzero(np.diff(z[top:]) > 0)
+        i = top + 1 + int(up[0]) if up.size else None
+    if i is not None:
+        return Error(st, "%s: sample %d (z = %.9g, F = %.9g)" % (where, i, z[i], F[i]), index=i,
+                     value=(float(z[i]), float(F[i])))
+    hints = {
+        lib.MDR_E_FEW: "the retract (from the largest z on) needs %d points or more, %d of them in contact"
+        % (lib.MDR_FIT_MIN_POINTS, lib.MDR_FIT_MIN_CONTACT),
+        lib.MDR_E_NOCONTACT: "no retract force above the baseline by more than the noise",
+        lib.MDR_E_NOPULLOFF: "no pull-off jump followed by free points (the curve must end separated)",
+        lib.MDR_E_KIND: "the flat punch cannot be fitted (its pull-off is Kendall's closed form)",
+    }
+    return Error(st, where, hint=hints.get(st, ""))

@@ -1,0 +1,260 @@
+"""mdr.fit (libmdr's fit kernel, lib/include/mdr_fit.h): round trips on
+curves made by the spring engine (mdr.Engine under machine control: a
+forward model independent of the fit's, which follows the contact module's
+equilibrium) and by JKR closed forms worked out here; sampled and worn
+tips; the result against `mdr fit --curve` (the same C code); every
+refusal.
+
+Tolerances, relative; the worst error measured in brackets (printed at the
+end of the run). The issue asks for E*, w, z0 to 1e-6 in f64: every f64
+bound below is tighter.
+  ENG64 = 2e-9     f64 E*, w, z0, F_base, w_adv from an engine curve
+                   (paraboloid; its table holds g exactly) [2.3e-10]
+  ENG32 = 1e-3     f32 the same; the curve's z carries a 1 um offset that
+                   float keeps to 6e-14 m, 6e-5 of the indentation
+                   (host_tests/test_fit_cli.sh) [2.8e-4]
+  MODEL64 = 3e-10  f64 the fitted model against the engine curve, relative
+                   to its largest force [3.5e-11]
+  JKR64 = 9e-8     f64 E*, w, z0, F_base, pull-off force from the JKR
+                   closed-form curve (bisection to rounding here) [9.7e-9]
+  WORN = 1e-5      f64 worn tip from an engine curve: the engine's table
+                   smears the rim over one spring (test_fit_cli.sh: 1e-5,
+                   measured 1.0e-6 there) [3.0e-6]; f32: ENG32 [1.1e-4]
+  TWO = 0.2        two-point method, E* (the CLI test's bound; a method of
+                   two points, not a fit)
+  0                against `mdr fit --curve`: every JSON field equal (f64
+                   printed with 17 digits, f32 with 9: compared as floats),
+                   and model() equal to `--model`'s column
+"""
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import mdr
+from conftest import ROOT, Worst
+
+ENG = {"f64": 2e-9, "f32": 1e-3}
+MODEL64, JKR64, WORN, TWO = 3e-10, 9e-8, 1e-5, 0.2
+within = Worst("test_fit")
+
+
+def rel(x, want):
+    return abs(x / want - 1)
+
+
+def engine_curve(c, k=0.2, path=(-1e-8, 2e-8, -4e-8), steps=1000, z0=1e-6, Fb=2e-10, w_adv=None, arith="f64"):
+    """An approach-retract curve of the spring engine under machine control
+    (as host_tests/test_fit_cli.sh's cycle()), offset by z0 and Fb."""
+    eng = mdr.Engine(c, springs=1024, w_adv=c.w if w_adv is None else w_adv, k_machine=k, arith=arith)
+    run = eng.run(list(path), control="machine", steps_per_segment=steps)
+    return run.z + z0, run.F + Fb
+
+
+SCENES = [  # (E*, w, R, k_machine, path)
+    (1e9, 0.05, 20e-9, 0.2, (-1e-8, 2e-8, -4e-8)),
+    (2e9, 0.08, 20e-9, 0.2, (-1e-8, 2e-8, -6e-8)),
+    (1e9, 0.02, 50e-9, 1.0, (-1e-8, 2e-8, -4e-8)),
+]
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+@pytest.mark.parametrize("scene", SCENES, ids=["afm", "stiffer", "blunt"])
+def test_engine_round_trip(cli, tmp_path, scene, arith):
+    """E*, w, z0, F_base (and w_adv with approach=True) recovered from the
+    engine's curve; the result equals `mdr fit --curve` field for field."""
+    E, w, R, k, path = scene
+    c = mdr.Contact("paraboloid", E=E, w=w, R=R)
+    z, F = engine_curve(c, k=k, path=path)
+    res = mdr.fit(z, F, "paraboloid", R=R, k_machine=k, arith=arith, approach=True)
+    tol = ENG[arith]
+    for q, want in (("E", E), ("w", w), ("z0", 1e-6), ("F_base", 2e-10), ("w_adv", w)):
+        assert within(rel(getattr(res, q), want), tol, "engine " + arith), (q, res)
+    assert res.method == "full" and res.iterations > 0 and res.n == 1 + (len(z) - 1) // 2
+    assert res.n_approach == (len(z) - 1) // 2
+    mu = (R * w**2 / (E**2 * 0.3e-9**3)) ** (1 / 3)  # Tabor, the default z_e
+    assert rel(res.mu, mu) < 10 * tol and res.R_mu == pytest.approx(R, rel=tol)
+    assert res.regime == ("JKR" if res.mu >= 5 else "transition" if res.mu > 0.1 else "DMT")
+    # the Contact form gives the same answer, and its E*, w are not used
+    res2 = mdr.fit(z, F, mdr.Contact("paraboloid", E=3.0, w=7.0, R=R), k_machine=k, arith=arith, approach=True)
+    assert res2.as_dict() == res.as_dict()
+    assert res.contact.E == res.E and res.contact.w == res.w and res.contact.profile == "paraboloid"
+    # the CLI on the same samples: every field
+    curve = tmp_path / "c.csv"
+    curve.write_text("z,F\n" + "".join("%.17g,%.17g\n" % zf for zf in zip(z, F)))
+    model = tmp_path / "m.csv"
+    p = subprocess.run([cli, "fit", "--curve", str(curve), "--profile", "paraboloid", "--R", "%.17g" % R,
+                        "--k-machine", "%.17g" % k, "--arith", arith, "--approach", "--model", str(model)],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stdout + p.stderr
+    js = json.loads(p.stdout)
+    same = (lambda a, b: np.float32(a) == np.float32(b)) if arith == "f32" else (lambda a, b: a == b)
+    for key, val in res.as_dict().items():
+        assert same(val, js[key]) if isinstance(val, float) else val == js[key], (key, val, js[key])
+    assert set(js) - set(res.as_dict()) == {"status"}
+    # model(): the CLI's --model column, the approach and retract branches
+    Fm, top = res.model()
+    cols = np.loadtxt(model, delimiter=",", skiprows=1, usecols=(0, 1, 2))
+    assert np.array_equal(cols[:, 0], z) and np.array_equal(cols[:, 2], Fm) and top == (len(z) - 1) // 2
+    if arith == "f64":
+        assert within(float(np.max(np.abs(Fm - F)) / np.max(np.abs(F))), MODEL64, "model f64")
+
+
+def jkr_retract(E, w, R, k, n=1200, z0=0.0, Fb=0.0):
+    """The retract of a JKR paraboloid through a machine of stiffness k,
+    from closed forms: d(a) = a^2/R - sqrt(2 pi w a/E*), F(a) = 4E* a^3/(3R)
+    - 2E* a sqrt(2 pi w a/E*), base z'(a) = d + F/k. The contact follows
+    the stable branch (dz'/da > 0) down to the fold, then jumps off (F = 0,
+    z' = d). z' from 3 pull-off radii down past the fold; a(z') by
+    bisection."""
+    def zp(a):
+        dl = np.sqrt(2 * np.pi * w * a / E)
+        d = a * a / R - dl
+        F = 4 * E * a**3 / (3 * R) - 2 * E * a * dl
+        return d + F / k, F
+
+    def dzp(a):
+        s = np.sqrt(2 * np.pi * w / E)
+        return 2 * a / R - 0.5 * s / np.sqrt(a) + (4 * E * a * a / R - 3 * E * s * np.sqrt(a)) / k
+
+    lo, hi = 1e-30, 10 * R
+    for _ in range(400):  # the fold: dz'/da = 0 (one root: dz'/da rises through 0)
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if dzp(mid) < 0 else (lo, mid)
+    af = 0.5 * (lo + hi)
+    ac = (9 * np.pi * w * R * R / (8 * E)) ** (1 / 3)
+    ztop, zf = zp(3 * ac)[0], zp(af)[0]
+    z = np.linspace(ztop, zf - 0.4 * (ztop - zf), n)
+    F = np.zeros(n)
+    on = z >= zf
+    lo, hi = np.full(on.sum(), af), np.full(on.sum(), 3 * ac)
+    for _ in range(200):  # a(z') on the stable branch, z' increasing in a
+        mid = 0.5 * (lo + hi)
+        up = zp(mid)[0] < z[on]
+        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
+    F[on] = zp(0.5 * (lo + hi))[1]
+    return z + z0, F + Fb, zp(af)[1]
+
+
+JKR_SCENES = [  # (E*, w, R, k): AFM, soft AFM, micro-gripper finger
+    (1e9, 0.05, 20e-9, 0.2),
+    (1e6, 0.05, 10e-6, 0.5),
+    (1e5, 0.02, 2e-3, 200.0),
+]
+
+
+@pytest.mark.parametrize("scene", JKR_SCENES, ids=["afm", "soft", "gripper"])
+def test_jkr_closed_form_round_trip(scene):
+    E, w, R, k = scene
+    z0, Fb = 3e-7 * (R / 20e-9) ** 0.5, -1e-3 * 1.5 * math.pi * w * R
+    z, F, F_fold = jkr_retract(E, w, R, k, z0=z0, Fb=Fb)
+    res = mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
+    for q, want in (("E", E), ("w", w), ("z0", z0), ("F_base", Fb)):
+        assert within(rel(getattr(res, q), want), JKR64, "jkr f64"), (q, res)
+    assert within(rel(res.pull_off_F, F_fold), JKR64, "jkr f64")
+    assert res.n == len(z)
+    # f32 too, at the bound of the engine's f32 round trip
+    res32 = mdr.fit(z, F, "paraboloid", R=R, k_machine=k, arith="f32")
+    for q, want in (("E", E), ("w", w)):
+        assert within(rel(getattr(res32, q), want), ENG["f32"], "engine f32"), (q, res32)
+    # two-point method: the pull-off force and the zero-force point only
+    two = mdr.fit(z, F, "paraboloid", R=R, k_machine=k, method="two-point")
+    assert two.method == "two-point" and two.iterations == 0 and rel(two.E, E) < TWO
+    # first guesses
+    g = mdr.fit(z, F, "paraboloid", R=R, k_machine=k, E0=2 * E, w0=0.6 * w)
+    assert within(rel(g.E, E), JKR64, "jkr f64") and within(rel(g.w, w), JKR64, "jkr f64")
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_sampled_tip(arith):
+    """A sampled paraboloid fits as the paraboloid (the samples' model holds
+    it exactly), its Tabor radius from the apex samples; a worn tip's
+    engine curve fitted with its samples."""
+    R, E, w = 20e-9, 1e9, 0.05
+    z, F = engine_curve(mdr.Contact("paraboloid", E=E, w=w, R=R))
+    r = np.arange(161) * 0.25e-9
+    res = mdr.fit(z, F, "table", r=r, f=r * r / (2 * R), k_machine=0.2, arith=arith)
+    for q, want in (("E", E), ("w", w), ("z0", 1e-6)):
+        assert within(rel(getattr(res, q), want), ENG[arith], "engine " + arith), (q, res)
+    assert rel(res.R_mu, R) < 10 * ENG[arith] and res.contact.profile == "table"
+    # the worn tip (flat to b = 1.5 nm): its engine curve from the samples
+    b = 1.5e-9
+    fw = np.where(r < b, 0.0, (r * r - b * b) / (2 * R))
+    tip = mdr.Contact("table", E=E, w=w, r=r, f=fw)
+    zw, Fw = engine_curve(tip)
+    res = mdr.fit(zw, Fw, tip, k_machine=0.2, arith=arith)
+    for q, want in (("E", E), ("w", w)):
+        assert within(rel(getattr(res, q), want), max(WORN, ENG[arith]), "worn " + arith), (q, res)
+    a = res.a_pull_off  # no apex curvature: R_mu = a_c^2/g(a_c), g = (a/R) sqrt(a^2 - b^2)
+    assert rel(res.R_mu, a * a / ((a / R) * math.sqrt(a * a - b * b))) < 1e-6
+
+
+def test_header_constants():
+    """The package's default z_e is the header's."""
+    import re
+
+    with open(ROOT + "/lib/include/mdr_fit.h") as f:
+        m = re.search(r"#define MDR_FIT_Z_E_DEFAULT ([0-9.e+-]+)", f.read())
+    assert float(m.group(1)) == mdr.fitting.Z_E_DEFAULT
+
+
+@pytest.fixture(scope="module")
+def curve():
+    c = mdr.Contact("paraboloid", E=1e9, w=0.05, R=20e-9)
+    return engine_curve(c)
+
+
+def raises(status, *args, **kw):
+    with pytest.raises(mdr.Error) as err:
+        mdr.fit(*args, **kw)
+    assert err.value.status == status, str(err.value)
+    return err.value
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_refusals(curve, arith):
+    z, F = curve
+    tip = dict(R=20e-9, k_machine=0.2, arith=arith)
+    top = int(np.argmax(z))
+    raises("MDR_E_FEW", z[-5:], F[-5:], "paraboloid", **tip)  # too few points
+    e = raises("MDR_E_FEW", z[:top + 6], F[:top + 6], "paraboloid", **tip)
+    assert "needs" in str(e)
+    raises("MDR_E_NOCONTACT", z[-400:], np.full(400, 1e-12), "paraboloid", **tip)  # no contact
+    raises("MDR_E_NOPULLOFF", z[:1400], F[:1400], "paraboloid", **tip)  # never separates (test_fit_cli.sh)
+    for arr in ("z", "F"):  # NaN, inf: the sample named
+        for bad in (np.nan, np.inf):
+            zz, FF = z.copy(), F.copy()
+            (zz if arr == "z" else FF)[1500] = bad
+            e = raises("MDR_E_NONFINITE", zz, FF, "paraboloid", **tip)
+            assert e.index == 1500 and "sample 1500" in str(e)
+    zz = z.copy()
+    zz[1600] = zz[1599] + 1e-12  # z rises within the retract
+    e = raises("MDR_E_ORDER", zz, F, "paraboloid", **tip)
+    assert e.index == 1600
+    if arith == "f32":
+        zz = z.copy()
+        zz[7] = 1e39
+        e = raises("MDR_E_OVERFLOW", zz, F, "paraboloid", **tip)
+        assert e.index == 7
+    for k in (0.0, -0.2):
+        raises("MDR_E_PARAM", z, F, "paraboloid", R=20e-9, k_machine=k, arith=arith)
+    raises("MDR_E_NONFINITE", z, F, "paraboloid", R=20e-9, k_machine=np.nan, arith=arith)
+    raises("MDR_E_PARAM", z, F, "paraboloid", z_e=0.0, **tip)
+    raises("MDR_E_PARAM", z, F, "paraboloid", E0=1e9, **tip)  # E0 without w0
+    raises("MDR_E_PARAM", z, F, "paraboloid", E0=-1e9, w0=0.05, **tip)
+    raises("MDR_E_PARAM", z, F, "paraboloid", method="lsq", **tip)
+    raises("MDR_E_KIND", z, F, "flatpunch", a0=1e-8, k_machine=0.2, arith=arith)
+    raises("MDR_E_KIND", z, F, "banana", R=1e-8, k_machine=0.2, arith=arith)
+    raises("MDR_E_PARAM", z, F[:-1], "paraboloid", **tip)
+    raises("MDR_E_PARAM", z[:2000].reshape(2, -1), F[:2000].reshape(2, -1), "paraboloid", **tip)
+    raises("MDR_E_PARAM", z, F, "paraboloid", R=-1.0, k_machine=0.2, arith=arith)  # the profile's refusal
+    with pytest.raises(ValueError):
+        mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2, arith="q31")
+    with pytest.raises(TypeError):
+        mdr.fit(z, F, mdr.Contact("paraboloid", E=1e9, w=0.05, R=20e-9), k_machine=0.2, R=20e-9)
+    with pytest.raises(TypeError):
+        mdr.fit(z, F, "paraboloid", k_machine=0.2)  # missing R
+    with pytest.raises(TypeError):
+        mdr.fit(z, F, 3.0, k_machine=0.2)
