@@ -841,8 +841,31 @@ static int fit_map_cmd(const struct fit_args *A)
 
 /* ---- arguments ----------------------------------------------------------- */
 
+/* the flags of mdr fit (numbers: its own and every profile parameter) */
+static int fit_flag(const char *f)
+{
+    static const char *const own[] = {"--k-machine", "--z-e", "--E0", "--w0", "--jobs"};
+    int k, i;
+    for (k = 0; k < (int)(sizeof own / sizeof own[0]); k++) {
+        if (strcmp(f, own[k]) == 0) {
+            return 1;
+        }
+    }
+    for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
+        for (i = 0; i < 3 && profiles[k].flags[i] != NULL; i++) {
+            if (strcmp(f, profiles[k].flags[i]) == 0) {
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
 static int fit_main(int argc, char **argv)
 {
+    static const char *const fit_bools[] = {"--approach", NULL};
+    struct cli_kv kv[CLI_MAX_FLAGS];
+    int nkv;
     struct fit_args A;
     const char *profile = NULL, *pname[3];
     double pval[3];
@@ -854,21 +877,20 @@ static int fit_main(int argc, char **argv)
     A.z_e = MDR_FIT_Z_E_DEFAULT;
     ncpu = sysconf(_SC_NPROCESSORS_ONLN);
     A.jobs = ncpu > 0 && ncpu < 1024 ? (int)ncpu : 1;
-    for (i = 2; i < argc; i++) {
-        const char *f = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    i = cli_collect(argc, argv, 2, fit_bools, kv, &nkv);
+    if (i == 3) {
+        fputs(usage_cmd[CMD_FIT], stdout);
+        return 0;
+    }
+    if (i != 0) {
+        return i;
+    }
+    for (i = 0; i < nkv; i++) {
+        const char *f = kv[i].name, *v = kv[i].val;
         double x = 0.0;
         if (strcmp(f, "--approach") == 0) {
             A.approach = 1;
-            continue;
-        }
-        if (strncmp(f, "--", 2) != 0) {
-            return usage_error("expected a flag", f);
-        }
-        if (v == NULL) {
-            return usage_error("flag needs a value", f);
-        }
-        i++;
-        if (strcmp(f, "--curve") == 0 || strcmp(f, "--map") == 0) {
+        } else if (strcmp(f, "--curve") == 0 || strcmp(f, "--map") == 0) {
             if (A.file != NULL) {
                 return usage_error("give one of --curve FILE or --map FILE", NULL);
             }
@@ -891,8 +913,10 @@ static int fit_main(int argc, char **argv)
             } else {
                 return usage_error("--method takes full or two-point", v);
             }
+        } else if (!fit_flag(f)) {
+            return usage_errf("%s: not a flag of mdr fit (mdr fit --help)", f);
         } else if (!parse_num(v, &x)) {
-            return usage_error("not a number", f);
+            return usage_errf("%s: not a finite number: %s", f, v);
         } else if (strcmp(f, "--k-machine") == 0) {
             A.k_m = x;
             have_k = 1;
@@ -915,6 +939,13 @@ static int fit_main(int argc, char **argv)
             pval[np++] = x;
         } else {
             return usage_error("unknown or misplaced flag", f);
+        }
+    }
+    if (!A.f64) {
+        for (k = 0; k < np; k++) {
+            if (outside_f32(pval[k])) {
+                return usage_errf("%s %.17g: outside the range of --arith f32", pname[k], pval[k]);
+            }
         }
     }
     if (A.file == NULL) {
