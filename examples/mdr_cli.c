@@ -658,6 +658,18 @@ static const struct {
     {"--a-start", C_(CMD_CRITICAL) | C_(CMD_STRESS)},
 };
 
+/* 1: f is a flag of command c's own (not only a profile parameter) */
+static int cmd_has(const char *f, int c)
+{
+    int k;
+    for (k = 0; k < (int)(sizeof flag_cmds / sizeof flag_cmds[0]); k++) {
+        if (strcmp(f, flag_cmds[k].name) == 0) {
+            return (flag_cmds[k].cmds & C_(c)) != 0;
+        }
+    }
+    return 0;
+}
+
 /* 1: a flag of command c (its own, or a profile parameter) */
 static int flag_known(const char *f, int c, int *of_profile)
 {
@@ -808,7 +820,7 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
         if (used[i]) {
             continue;
         }
-        if (known <= 0 || (of_profile && strcmp(f, "--n") != 0)) {
+        if (known <= 0 || (of_profile && !cmd_has(f, c))) {
             return usage_errf("%s: not a parameter of --profile %s", f, profile);
         }
         if (strcmp(f, "--E") == 0) {
@@ -863,13 +875,13 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
     if (!A->f64) {
         for (i = 0; i < nflag; i++) {
             if (outside_f32(vals[i])) {
-                return usage_errf("%s %.17g: outside the range of --arith f32 (0 or |v| in [%.9g, %.9g])",
+                return usage_errf("%s %.9g: outside the range of --arith f32 (0 or |v| in [%.9g, %.9g])",
                                   names[i], vals[i], (double)FLT_MIN, (double)FLT_MAX);
             }
         }
         for (i = 0; i < A->npath; i++) {
             if (outside_f32(A->path[i])) {
-                return usage_errf("--path value %ld (%.17g): outside the range of --arith f32", i + 1,
+                return usage_errf("--path value %ld (%.9g): outside the range of --arith f32", i + 1,
                                   A->path[i]);
             }
         }
@@ -878,7 +890,7 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
      * stays finite, between a and b, when (b - a) S is finite */
     for (i = 0; i + 1 < A->npath; i++) {
         if (!is_finite((A->path[i + 1] - A->path[i]) * (double)(A->steps > 0 ? A->steps : 1))) {
-            return usage_errf("--path segment %ld (%.17g to %.17g): the interpolation overflows", i + 1,
+            return usage_errf("--path segment %ld (%.9g to %.9g): the interpolation overflows", i + 1,
                               A->path[i], A->path[i + 1]);
         }
     }

@@ -944,7 +944,7 @@ static int fit_main(int argc, char **argv)
     if (!A.f64) {
         for (k = 0; k < np; k++) {
             if (outside_f32(pval[k])) {
-                return usage_errf("%s %.17g: outside the range of --arith f32", pname[k], pval[k]);
+                return usage_errf("%s %.9g: outside the range of --arith f32", pname[k], pval[k]);
             }
         }
     }
