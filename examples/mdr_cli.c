@@ -290,6 +290,38 @@ static const char *control_name(uint8_t c)
     return c == MDR_CONTROL_LOAD ? "load" : c == MDR_CONTROL_GRIPS ? "grips" : "machine";
 }
 
+/* The "units" object of the keys written by j (the result) and in (its
+ * input object; "path" in pu), and the end of the object. */
+static void json_units(cli_json *j, const cli_json *in, const char *pu)
+{
+    int i, k;
+    json_key(j, "units");
+    fputc('{', j->fp);
+    {
+        int first = 1;
+        for (k = 0; k < j->nk + in->nk; k++) {
+            const char *key = k < j->nk ? j->keys[k] : in->keys[k - j->nk];
+            const char *u = NULL;
+            if (strcmp(key, "path") == 0) {
+                u = pu;
+            }
+            for (i = 0; u == NULL && i < (int)(sizeof unit_of / sizeof unit_of[0]); i++) {
+                if (strcmp(unit_of[i].key, key) == 0) {
+                    u = unit_of[i].unit;
+                }
+            }
+            for (i = 0; u != NULL && i < k && i < j->nk; i++) {
+                u = strcmp(j->keys[i], key) == 0 ? NULL : u; /* listed once */
+            }
+            if (u != NULL) {
+                fprintf(j->fp, "%s\"%s\": \"%s\"", first ? "" : ", ", key, u);
+                first = 0;
+            }
+        }
+    }
+    fputs("}}\n", j->fp);
+}
+
 /* The "input" object of a command's JSON (the values as given, in double)
  * and its "units" for those keys and the result's (j: the result object's
  * writer, whose keys are in it); ends the object. */
@@ -365,32 +397,7 @@ static void json_end(cli_json *j, const struct cli_args *A)
         json_num(&in, "a_start", A->a_start);
     }
     fputc('}', j->fp);
-    json_key(j, "units");
-    fputc('{', j->fp);
-    {
-        int first = 1;
-        const char *pu = A->control == MDR_CONTROL_LOAD ? "N" : "m";
-        for (k = 0; k < j->nk + in.nk; k++) {
-            const char *key = k < j->nk ? j->keys[k] : in.keys[k - j->nk];
-            const char *u = NULL;
-            if (strcmp(key, "path") == 0) {
-                u = pu;
-            }
-            for (i = 0; u == NULL && i < (int)(sizeof unit_of / sizeof unit_of[0]); i++) {
-                if (strcmp(unit_of[i].key, key) == 0) {
-                    u = unit_of[i].unit;
-                }
-            }
-            for (i = 0; u != NULL && i < k && i < j->nk; i++) {
-                u = strcmp(j->keys[i], key) == 0 ? NULL : u; /* listed once */
-            }
-            if (u != NULL) {
-                fprintf(j->fp, "%s\"%s\": \"%s\"", first ? "" : ", ", key, u);
-                first = 0;
-            }
-        }
-    }
-    fputs("}}\n", j->fp);
+    json_units(j, &in, A->control == MDR_CONTROL_LOAD ? "N" : "m");
 }
 
 #define CLI_T float
@@ -625,8 +632,6 @@ static int outside_f32(double v)
     return m > (double)FLT_MAX || (m != 0.0 && m < (double)FLT_MIN);
 }
 
-#include "mdr_fit_cli.h"
-
 /* the commands that take a flag (bits of CMD_*) */
 #define C_(c) (1u << (c))
 #define C_ALL (C_(CMD_EQ) | C_(CMD_CRITICAL) | C_(CMD_CURVE) | C_(CMD_STRESS) | C_(CMD_CYCLE) | C_(CMD_TABLE))
@@ -687,6 +692,8 @@ static int flag_known(const char *f, int c, int *of_profile)
     }
     return *of_profile ? 1 : 0;
 }
+
+#include "mdr_fit_cli.h"
 
 static void free_args(struct cli_args *A)
 {

@@ -46,7 +46,7 @@
 
 struct fit_args {
     const char *file, *model;
-    int map, f64, approach, jobs;
+    int map, f64, approach, jobs, pi, have_E0;
     uint8_t kind, method;
     double p[3], k_m, z_e, E0, w0;
 };
@@ -361,11 +361,31 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
     return 0;
 }
 
-static void fit_json_num(const char *key, double v, int f64, int *first)
+/* the input and units objects of a fit's JSON; ends the object */
+static void fit_json_end(cli_json *j, const struct fit_args *A)
 {
-    printf("%s\"%s\": ", *first ? "" : ", ", key);
-    printf(f64 ? "%.17g" : "%.9g", v);
-    *first = 0;
+    cli_json in;
+    int k;
+    json_key(j, "input");
+    json_begin(&in, j->fp, 1);
+    json_str(&in, "command", "fit");
+    json_str(&in, "curve", A->file);
+    json_str(&in, "profile", profiles[A->pi].name);
+    for (k = 0; k < 3 && profiles[A->pi].flags[k] != NULL; k++) {
+        json_num(&in, profiles[A->pi].flags[k] + 2, A->p[k]);
+    }
+    json_num(&in, "k_m", A->k_m);
+    json_num(&in, "z_e", A->z_e);
+    if (A->have_E0) {
+        json_num(&in, "E0", A->E0);
+        json_num(&in, "w0", A->w0);
+    }
+    json_str(&in, "method", A->method == MDR_FIT_FULL ? "full" : "two-point");
+    json_key(&in, "approach");
+    fputs(A->approach ? "true" : "false", in.fp);
+    json_str(&in, "arith", A->f64 ? "f64" : "f32");
+    fputc('}', j->fp);
+    json_units(j, &in, "m");
 }
 
 static int fit_curve_cmd(const struct fit_args *A)
@@ -373,8 +393,9 @@ static int fit_curve_cmd(const struct fit_args *A)
     fit_reader r = {NULL, NULL, NULL, 0, 0};
     fit_curve c;
     fit_scratch s = {NULL, 0};
-    int rc = 0, header = 0, first = 1;
+    int rc = 0, header = 0;
     long bad;
+    cli_json j;
     memset(&c, 0, sizeof c);
     r.name = A->file;
     r.fp = fopen(A->file, "rb");
@@ -418,38 +439,48 @@ static int fit_curve_cmd(const struct fit_args *A)
     }
     (void)fit_one(A, c.z, c.F, c.n, &s, &c.res);
     free(s.buf);
-    printf("{");
+    json_begin(&j, stdout, A->f64);
     if (c.res.st != MDR_OK) {
-        printf("\"status\": \"%s\", \"message\": \"%s\", \"status_code\": %d, \"method\": \"%s\", \"arith\": \"%s\"}\n",
-               fit_status_name(c.res.st), mdr_status_str(c.res.st), (int)c.res.st,
-               A->method == MDR_FIT_FULL ? "full" : "two-point", A->f64 ? "f64" : "f32");
+        json_str(&j, "status", fit_status_name(c.res.st));
+        json_str(&j, "message", mdr_status_str(c.res.st));
+        json_key(&j, "status_code");
+        printf("%d", (int)c.res.st);
+        json_str(&j, "method", A->method == MDR_FIT_FULL ? "full" : "two-point");
+        json_str(&j, "arith", A->f64 ? "f64" : "f32");
+        fit_json_end(&j, A);
         fit_curve_free(&c);
         return 1;
     }
-    fit_json_num("E", c.res.E, A->f64, &first);
-    fit_json_num("w", c.res.w, A->f64, &first);
-    fit_json_num("z0", c.res.z0, A->f64, &first);
-    fit_json_num("F_base", c.res.F_base, A->f64, &first);
-    fit_json_num("E_err", c.res.E_err, A->f64, &first);
-    fit_json_num("w_err", c.res.w_err, A->f64, &first);
-    fit_json_num("z0_err", c.res.z0_err, A->f64, &first);
-    fit_json_num("F_base_err", c.res.F_base_err, A->f64, &first);
-    fit_json_num("mu", c.res.mu, A->f64, &first);
-    fit_json_num("R_mu", c.res.R_mu, A->f64, &first);
-    fit_json_num("z_e", A->z_e, A->f64, &first);
-    printf(", \"regime\": \"%s\"", mdr_regime_str(c.res.regime));
-    fit_json_num("rms", c.res.rms, A->f64, &first);
-    fit_json_num("pull_off_F", c.res.pull_off_F, A->f64, &first);
-    fit_json_num("pull_off_z", c.res.pull_off_z, A->f64, &first);
-    fit_json_num("a_pull_off", c.res.a_pull_off, A->f64, &first);
+    json_num(&j, "E", c.res.E);
+    json_num(&j, "w", c.res.w);
+    json_num(&j, "z0", c.res.z0);
+    json_num(&j, "F_base", c.res.F_base);
+    json_num(&j, "E_err", c.res.E_err);
+    json_num(&j, "w_err", c.res.w_err);
+    json_num(&j, "z0_err", c.res.z0_err);
+    json_num(&j, "F_base_err", c.res.F_base_err);
+    json_num(&j, "mu", c.res.mu);
+    json_num(&j, "R_mu", c.res.R_mu);
+    json_num(&j, "z_e", A->z_e);
+    json_str(&j, "regime", mdr_regime_str(c.res.regime));
+    json_num(&j, "rms", c.res.rms);
+    json_num(&j, "pull_off_F", c.res.pull_off_F);
+    json_num(&j, "pull_off_z", c.res.pull_off_z);
+    json_num(&j, "a_pull_off", c.res.a_pull_off);
     if (A->approach) {
-        fit_json_num("w_adv", c.res.w_adv, A->f64, &first);
-        fit_json_num("w_adv_err", c.res.w_adv_err, A->f64, &first);
-        printf(", \"n_approach\": %lu", (unsigned long)c.res.n_approach);
+        json_num(&j, "w_adv", c.res.w_adv);
+        json_num(&j, "w_adv_err", c.res.w_adv_err);
+        json_key(&j, "n_approach");
+        printf("%lu", (unsigned long)c.res.n_approach);
     }
-    printf(", \"n\": %lu, \"method\": \"%s\", \"iterations\": %u, \"arith\": \"%s\", \"status\": \"ok\"}\n",
-           (unsigned long)c.res.n, c.res.method == MDR_FIT_FULL ? "full" : "two-point",
-           (unsigned)c.res.iterations, A->f64 ? "f64" : "f32");
+    json_key(&j, "n");
+    printf("%lu", (unsigned long)c.res.n);
+    json_str(&j, "method", c.res.method == MDR_FIT_FULL ? "full" : "two-point");
+    json_key(&j, "iterations");
+    printf("%u", (unsigned)c.res.iterations);
+    json_str(&j, "arith", A->f64 ? "f64" : "f32");
+    json_str(&j, "status", "ok");
+    fit_json_end(&j, A);
     rc = A->model != NULL ? fit_write_model(A, &c) : 0;
     fit_curve_free(&c);
     return rc;
@@ -914,6 +945,10 @@ static int fit_main(int argc, char **argv)
                 return usage_error("--method takes full or two-point", v);
             }
         } else if (!fit_flag(f)) {
+            int of_profile;
+            if (flag_known(f, CMD_EQ, &of_profile) == 0) {
+                return usage_error("unknown flag", f);
+            }
             return usage_errf("%s: not a flag of mdr fit (mdr fit --help)", f);
         } else if (!parse_num(v, &x)) {
             return usage_errf("%s: not a finite number: %s", f, v);
@@ -972,6 +1007,8 @@ static int fit_main(int argc, char **argv)
         return usage_error("the flat punch cannot be fitted (pinned at its rim until it ruptures)", NULL);
     }
     A.kind = profiles[pi].kind;
+    A.pi = pi;
+    A.have_E0 = have_E0;
     {
         const char *missing = profile_params(pi, pname, pval, np, used, A.p);
         if (missing != NULL) {

@@ -321,7 +321,8 @@ refuse '^mdr: --k-machine goes with --control machine' critical $P --control loa
 refuse '^mdr: --file goes with --profile table' eq $P --a 1e-6 --file "$TMP/tip.csv"
 refuse '^mdr: --a-start goes with --control' stress $P --a 1e-6 --r 0 --a-start 1e-6
 refuse '^mdr: flag takes no value: --approach$' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --approach=1
-refuse '^mdr: --bogus: not a flag of mdr fit' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --bogus 1
+refuse '^mdr: unknown flag: --bogus' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --bogus 1
+refuse '^mdr: --control: not a flag of mdr fit' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --control load
 refuse 'given twice: --k-machine' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --k-machine=2
 # the power law's exponent is --n: curve's count is then --points
 csv=$($MDR curve --profile powerlaw --C 5e4 --n 2 --E 1e6 --w 0.05 --a-max 1e-5 --points 20 --arith f64) &&

@@ -119,5 +119,21 @@ expect2 "curve not contiguous" "a1 appears again" fit --map "$TMP/again.csv" $TI
 printf 'curve,z,F\nx,1e-8\n' > "$TMP/map_two.csv"
 expect2 "map: two fields" "map_two.csv:2: expected three fields" fit --map "$TMP/map_two.csv" $TIP --k-machine 0.2
 
+# every JSON object carries its units and echoes its inputs (issue 19);
+# --flag=value as --flag value
+out=$("$MDR" fit --curve="$TMP/c.csv" --profile=paraboloid --R=20e-9 --k-machine=0.2 --approach) || bad "fit --flag=value exit"
+printf '%s' "$out" | /usr/bin/python3 -c '
+import json, sys
+j = json.loads(sys.stdin.read())
+u, i = j["units"], j["input"]
+assert u["E"] == "Pa" and u["w"] == "J/m^2" and u["z0"] == "m" and u["F_base"] == "N" and u["k_m"] == "N/m" and u["R"] == "m"
+assert all(k in u for o in (j, i) for k, v in o.items() if isinstance(v, float))
+assert i["profile"] == "paraboloid" and i["R"] == 20e-9 and i["k_m"] == 0.2 and i["approach"] is True and i["arith"] == "f64"
+assert i["curve"].endswith("c.csv") and i["method"] == "full"
+' && ok || bad "fit JSON units and input: $out"
+out=$("$MDR" fit --curve "$TMP/nosep.csv" $TIP --k-machine 0.2)
+[ -n "$(key "$out" units)" ] && [ "$(key "$out" input.k_m)" = 0.2 ] && ok || bad "a failed fit's JSON echoes its input: $out"
+expect2 "duplicate flag" "given twice" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --k-machine=0.3
+
 echo "fit cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
