@@ -122,7 +122,7 @@ static long read_table(const char *file, double **r, double **f, long **lines)
     FILE *fp = fopen(file, "rb");
     char *text = NULL;
     size_t len = 0, cap = 0, got;
-    long n = -1, line = 0;
+    long n = -4, line = 0; /* -4: out of memory */
     *r = *f = NULL;
     *lines = NULL;
     if (fp == NULL) {
@@ -969,24 +969,23 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
     }
     if (A->kind == KIND_TABLE) {
         A->ntab = read_table(A->file, &A->tr, &A->tf, &A->tline);
-        if (A->ntab < 0) {
-            return 2;
+        if (A->ntab < 0 || A->tr == NULL || A->tf == NULL || A->tline == NULL) {
+            return 2; /* named by read_table() */
         }
         A->ts = malloc((size_t)(A->ntab > 1 ? A->ntab - 1 : 1) * sizeof *A->ts);
         if (A->ts == NULL) {
             return usage_error("out of memory reading", A->file);
         }
-        if (tip_slopes(A->tr, A->tf, A->ntab, A->ts) != 0) {
-            for (k = 0; k + 1 < A->ntab && A->tr[k + 1] > A->tr[k]; k++) {
-            }
-            return usage_errf("%s:%ld: r must increase strictly (r = %.17g after %.17g)", A->file,
-                              A->tline[k + 1], A->tr[k + 1], A->tr[k]);
-        }
         for (k = 0; k < A->ntab; k++) {
             if (!is_finite(A->tr[k]) || !is_finite(A->tf[k])) {
                 return usage_errf("%s:%ld: not a finite number", A->file, A->tline[k]);
             }
+            if (k > 0 && !(A->tr[k] > A->tr[k - 1])) {
+                return usage_errf("%s:%ld: r must increase strictly (r = %.17g after %.17g)", A->file,
+                                  A->tline[k], A->tr[k], A->tr[k - 1]);
+            }
         }
+        (void)tip_slopes(A->tr, A->tf, A->ntab, A->ts); /* r increases: checked above */
     }
     return 0;
 }

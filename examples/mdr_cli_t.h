@@ -128,7 +128,9 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
         hname = base != NULL ? base + 1 : hpath;
         (void)snprintf(guard, sizeof guard, "MDR_TABLE_%s_H", A->name);
         for (i = 0; guard[i]; i++) {
-            guard[i] = guard[i] >= 'a' && guard[i] <= 'z' ? (char)(guard[i] - 'a' + 'A') : guard[i];
+            if (guard[i] >= 'a' && guard[i] <= 'z') {
+                guard[i] = (char)(guard[i] - ('a' - 'A'));
+            }
         }
         out = fopen(hpath, "w");
         if (out == NULL) {
