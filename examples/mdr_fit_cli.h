@@ -148,28 +148,51 @@ typedef struct {
     long line;
 } fit_reader;
 
-/* the next line (newline removed) in r->buf: its length, or -1 at the end
- * of the file, on a read error (ferror tells) or out of memory */
+/* the longest line and the most points of one curve that mdr fit reads */
+#define FIT_LINE_MAX 65536
+#define FIT_POINTS_MAX ((size_t)1 << 24)
+
+static int fit_bad_line(const fit_reader *r, const char *why);
+
+/* the next line (newline removed) in r->buf: its length, -1 at the end of
+ * the file, on a read error (ferror tells) or out of memory, or -2 after a
+ * message naming the line: a NUL byte (not a text file: /dev/zero is
+ * refused at once), a line longer than FIT_LINE_MAX - 2 characters */
 static long fit_getline(fit_reader *r)
 {
     size_t len = 0;
     for (;;) {
+        size_t room, got;
         if (r->cap - len < 2) {
             size_t nc = r->cap ? 2 * r->cap : 4096;
-            char *b = realloc(r->buf, nc);
+            char *b = nc > FIT_LINE_MAX ? NULL : realloc(r->buf, nc);
             if (b == NULL) {
+                if (nc > FIT_LINE_MAX) {
+                    r->line++;
+                    (void)fit_bad_line(r, "line longer than 65534 characters");
+                    return -2;
+                }
                 return -1;
             }
             r->buf = b;
             r->cap = nc;
         }
-        if (fgets(r->buf + len, (int)(r->cap - len > INT_MAX ? INT_MAX : r->cap - len), r->fp) == NULL) {
+        room = r->cap - len;
+        if (fgets(r->buf + len, (int)(room > INT_MAX ? INT_MAX : room), r->fp) == NULL) {
             if (len == 0) {
                 return -1;
             }
             break;
         }
-        len += strlen(r->buf + len);
+        got = strlen(r->buf + len);
+        /* fgets stops at a newline, at the end of the file or with the
+         * buffer full: anything else is a NUL byte in the text */
+        if ((got == 0 || r->buf[len + got - 1] != '\n') && got + 1 < room && !feof(r->fp)) {
+            r->line++;
+            (void)fit_bad_line(r, "a NUL byte (not a text file)");
+            return -2;
+        }
+        len += got;
         if (len > 0 && r->buf[len - 1] == '\n') {
             len--;
             break;
@@ -256,8 +279,17 @@ typedef struct {
     fit_res res;
 } fit_curve;
 
+/* why fit_push() failed */
+static const char *fit_push_why(const fit_curve *c)
+{
+    return c->n >= FIT_POINTS_MAX ? "more than 16777216 points in one curve" : "out of memory";
+}
+
 static int fit_push(fit_curve *c, double z, double F, long line)
 {
+    if (c->n >= FIT_POINTS_MAX) {
+        return 1;
+    }
     if (c->n == c->cap) {
         size_t nc = c->cap ? 2 * c->cap : 1024;
         double *zz = realloc(c->z, nc * sizeof *zz);
@@ -402,9 +434,14 @@ static int fit_curve_cmd(const struct fit_args *A)
     if (r.fp == NULL) {
         return usage_error("cannot open", A->file);
     }
-    while (rc == 0 && fit_getline(&r) >= 0) {
+    for (;;) {
         char *f[3][2];
         double z, F;
+        long got = rc == 0 ? fit_getline(&r) : -1;
+        if (got < 0) {
+            rc = got == -2 ? 2 : rc;
+            break;
+        }
         if (fit_skip(r.buf)) {
             continue;
         }
@@ -416,7 +453,7 @@ static int fit_curve_cmd(const struct fit_args *A)
             header = 1;
             rc = fit_row(&r, f, 0, &z, &F);
             if (rc == 0 && fit_push(&c, z, F, r.line) != 0) {
-                rc = fit_bad_line(&r, "out of memory");
+                rc = fit_bad_line(&r, fit_push_why(&c));
             }
         }
     }
@@ -664,7 +701,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         pd->label = NULL;
         pd->have = 0;
         if (fit_push(&ch[0], pd->z, pd->F, pd->line) != 0) {
-            (void)fit_bad_line(r, "out of memory");
+            (void)fit_bad_line(r, fit_push_why(&ch[0]));
             return -2;
         }
         active = 1;
@@ -673,7 +710,11 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         char *f[3][2], *label;
         double z, F;
         int sn;
-        if (fit_getline(r) < 0) {
+        long got = fit_getline(r);
+        if (got == -2) {
+            return -2;
+        }
+        if (got < 0) {
             return (long)(k + (size_t)active);
         }
         if (fit_skip(r->buf)) {
@@ -693,7 +734,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         }
         if (active && fit_same_label(ch[k].label, f[0][0], f[0][1])) {
             if (fit_push(&ch[k], z, F, r->line) != 0) {
-                (void)fit_bad_line(r, "out of memory");
+                (void)fit_bad_line(r, fit_push_why(&ch[k]));
                 return -2;
             }
             continue;
@@ -728,7 +769,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         ch[k].label = label;
         active = 1;
         if (fit_push(&ch[k], z, F, r->line) != 0) {
-            (void)fit_bad_line(r, "out of memory");
+            (void)fit_bad_line(r, fit_push_why(&ch[k]));
             return -2;
         }
     }

@@ -85,7 +85,7 @@ res=$("$MDR" fit --map "$TMP/map2.csv" $TIP --k-machine 0.2)
 expect2() { # expect2 WHAT PATTERN ARGS...
     local what=$1 pat=$2 err
     shift 2
-    err=$("$MDR" "$@" 2>&1 >/dev/null)
+    err=$(timeout 60 "$MDR" "$@" 2>&1 >/dev/null) # a read that never ends fails, not hangs
     if [ $? -eq 2 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && printf '%s' "$err" | grep -q -- "$pat"; then
         ok
     else
@@ -134,6 +134,17 @@ assert i["curve"].endswith("c.csv") and i["method"] == "full"
 out=$("$MDR" fit --curve "$TMP/nosep.csv" $TIP --k-machine 0.2)
 [ -n "$(key "$out" units)" ] && [ "$(key "$out" input.k_m)" = 0.2 ] && ok || bad "a failed fit's JSON echoes its input: $out"
 expect2 "duplicate flag" "given twice" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --k-machine=0.3
+
+# bounded reads: a NUL byte (/dev/zero at once) or an over-long line is
+# refused with its file:line
+start=$(date +%s)
+expect2 "/dev/zero curve" "/dev/zero:1: a NUL byte" fit --curve /dev/zero $TIP --k-machine 0.2
+expect2 "/dev/zero map" "/dev/zero:1: a NUL byte" fit --map /dev/zero $TIP --k-machine 0.2
+[ $(($(date +%s) - start)) -le 2 ] && ok || bad "/dev/zero refused quickly"
+{ printf 'z,F\n'; head -c 70000 /dev/zero | tr '\0' '1'; echo; } >"$TMP/long.csv"
+expect2 "long line" "long.csv:2: line longer than 65534 characters" fit --curve "$TMP/long.csv" $TIP --k-machine 0.2
+printf 'z,F\n1e-9,2\n3e-9\0,4\n5e-9,1\n' >"$TMP/nul.csv"
+expect2 "NUL byte" "nul.csv:3: a NUL byte" fit --curve "$TMP/nul.csv" $TIP --k-machine 0.2
 
 echo "fit cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
