@@ -786,7 +786,7 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
     const char *profile = NULL;
     const char *names[CLI_MAX_FLAGS];
     double vals[CLI_MAX_FLAGS];
-    int nflag = 0, i, k;
+    int nflag = 0, i;
     int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_n = 0, have_steps = 0;
     int used[CLI_MAX_FLAGS] = {0};
     const char *path_arg = NULL;
@@ -877,7 +877,7 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
         }
         A->kind = KIND_TABLE;
     } else {
-        int pi = -1;
+        int pi = -1, k;
         if (A->file != NULL) {
             return usage_error("--file goes with --profile table", A->file);
         }

@@ -403,7 +403,6 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
 static void fit_json_end(cli_json *j, const struct fit_args *A)
 {
     cli_json in;
-    int k;
     json_key(j, "input");
     json_begin(&in, j->fp, 1);
     json_str(&in, "command", "fit");
@@ -412,6 +411,7 @@ static void fit_json_end(cli_json *j, const struct fit_args *A)
         json_str(&in, "profile", "table");
         json_str(&in, "file", A->tipfile);
     } else {
+        int k;
         json_str(&in, "profile", profiles[A->pi].name);
         for (k = 0; k < 3 && profiles[A->pi].flags[k] != NULL; k++) {
             json_num(&in, profiles[A->pi].flags[k] + 2, A->p[k]);
