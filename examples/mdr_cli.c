@@ -1,53 +1,17 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr: command-line front end of libmdr (host only; uses stdio).
+ * `mdr --help` and `mdr CMD --help` print the usage (the texts below).
  *
- *   mdr eq       <profile> <material> [--arith f32|f64] --a A [--d D]
- *                (without --d the equilibrium state at radius A; with it
- *                the state (A, D) as given, pinned or not: F of that state,
- *                its K_I and G; d_eq, F_eq the equilibrium's)
- *   mdr critical <profile> <material> --control load|grips|machine
- *                [--k-machine K] [--a-start A]
- *                (+ max_tensile_F, max_tensile_d: the most tensile force
- *                of the quasi-static path to the pull-off, and its depth)
- *   mdr curve    <profile> <material> --a-max A --n N
- *   mdr stress   <profile> <material> --a A [--d D] --r R
- *   mdr stress   <profile> <material> --control MODE [--k-machine K] --r S
- *                (at the critical state, r = S * a_c with 0 <= S < 1)
- *   mdr cycle    <profile> <material> --control load|grips|machine
- *                [--k-machine K] [--springs N] [--w-adv W] [--a-max A]
- *                --path V1,V2,... --steps-per-segment S
- *                drives the spring engine along the piecewise-linear path of
- *                the controlled variable (d [m], F [N] or z [m]); CSV
- *                step,z,d,F,a,event on stdout, one JSON summary on stderr:
- *                pull_off_F pull_off_d events dissipated (+ cycles, jumps,
- *                springs, a_max, max_tensile_F, max_tensile_d: the most
- *                tensile force of the path, before or after any jump, and
- *                its depth; null if none was tensile, event_list)
- *   mdr table    <profile> [--springs N] --a-max A [--name NAME]
- *                prints the spring table as const C arrays (for flash)
- *
- *   cycle and table take --arith f32|f64|q31 (default f32). q31: the
- *   fixed-point engine (lib/include/mdr_q31.h) on the table converted from
- *   the f64 one, constants by the double init; cycle still reads and prints
- *   SI values (converted in double), table prints the q31 nodes (N must be
- *   a power of two).
- *
- *   <profile> also: --profile table --file FILE (CSV r,f in metres, r from
- *               0 strictly increasing; every command; the profile ends at
- *               the last r; slopes formed in double, then converted)
- *   --springs N  springs of the table (default 1024, up to MDR_SPRINGS_MAX)
- *   --a-max A    table extent (cycle: default 1.25 x the largest radius the
- *                path can reach, from the closed-form equilibrium)
- *
- *   <profile>:  --profile paraboloid --R R | cone --theta RAD |
- *               powerlaw --C C --n N | flatpunch --a0 A0 | sphere --R R |
- *               flattip --R R --b B | wavy --R R --h H --lambda L
- *   <material>: --E ESTAR [Pa] --w W [J/m^2, work of adhesion]
- *
- * eq, critical and stress print one JSON object, curve prints CSV a,d,F.
- * Bad arguments: one line on stderr naming the problem, exit status 2.
- * A computation that fails (iteration cap) exits with 1.
+ * Results on stdout, errors on stderr (one line naming the problem). Exit
+ * status: 0 ok, 1 a computation that fails (iteration cap, the edge beyond
+ * the table), 2 bad arguments or input files. Every flag is --flag VALUE or
+ * --flag=VALUE, given once; a flag the command does not use is refused.
+ * Every JSON object carries "input" (the inputs it was computed from) and
+ * "units" (the SI unit of each quantity key).
  */
+#include <float.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,27 +20,47 @@
 #include "mdr_host.h"
 #include "tip_csv.h"
 
-enum { CMD_EQ, CMD_CRITICAL, CMD_CURVE, CMD_STRESS, CMD_CYCLE, CMD_TABLE };
+enum { CMD_EQ, CMD_CRITICAL, CMD_CURVE, CMD_STRESS, CMD_CYCLE, CMD_TABLE, CMD_FIT, NCMD };
+
+static const char *const cmd_names[NCMD] = {"eq", "critical", "curve", "stress", "cycle", "table", "fit"};
 
 /* --profile table */
 #define KIND_TABLE MDR_PROFILE_TABLE
+
+/* the bounds of a tip file (--file): the points the table takes, the bytes
+ * of as many lines of TIP_CSV_LINE_MAX characters */
+#define TIP_POINTS_MAX 65535L
+#define TIP_BYTES_MAX ((size_t)TIP_POINTS_MAX * TIP_CSV_LINE_MAX)
 
 struct cli_args {
     int cmd;
     uint8_t kind, control;
     double p[3], E, w, a, r, a_max, a_start, k_m, w_adv, d;
     long n, springs, steps;
-    int f64, q31, have_control, have_a_start, have_amax, have_d;
+    int f64, q31, have_control, have_a_start, have_amax, have_d, have_k, have_w_adv, pi;
     double *path; /* --path values */
     long npath;
     double *tr, *tf, *ts; /* --file samples, and their slopes (double) */
+    long *tline;          /* the file line of each sample */
     long ntab;
-    const char *name, *file;
+    const char *name, *file, *summary, *header, *output;
 };
 
 static int usage_error(const char *msg, const char *what)
 {
     fprintf(stderr, "mdr: %s%s%s\n", msg, what ? ": " : "", what ? what : "");
+    return 2;
+}
+
+/* one line on stderr, "mdr: " and the formatted message; returns 2 */
+static int usage_errf(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("mdr: ", stderr);
+    va_start(ap, fmt);
+    (void)vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
     return 2;
 }
 
@@ -86,6 +70,12 @@ static int cli_fail(const char *what, mdr_status st)
     return st == MDR_E_NOCONV ? 1 : 2;
 }
 
+static int is_finite(double v)
+{
+    return v - v == 0.0; /* NaN - NaN and inf - inf are NaN */
+}
+
+/* a whole string as a finite number (strtod: decimal or hex; not nan, inf) */
 static int parse_num(const char *s, double *v)
 {
     char *end;
@@ -93,10 +83,11 @@ static int parse_num(const char *s, double *v)
         return 0;
     }
     *v = strtod(s, &end);
-    return *end == '\0';
+    return *end == '\0' && is_finite(*v);
 }
 
-/* "V1,V2,..." -> malloc'd array; 0 on a malformed list */
+/* "V1,V2,..." -> malloc'd array of finite numbers: the count, 0 out of
+ * memory, or -(1 + i) when value i (from 0) is not a finite number */
 static long parse_list(const char *s, double **out)
 {
     long n = 1, i = 0;
@@ -111,81 +102,127 @@ static long parse_list(const char *s, double **out)
     }
     while (i < n) {
         char *end;
-        v[i++] = strtod(s, &end);
-        if (end == s || (*end != ',' && *end != '\0')) {
+        v[i] = strtod(s, &end);
+        if (end == s || (*end != ',' && *end != '\0') || !is_finite(v[i])) {
             free(v);
-            return 0;
+            return -(1 + i);
         }
+        i++;
         s = end + 1;
     }
     *out = v;
     return n;
 }
 
-/* CSV of r,f (examples/tip_csv.h) -> malloc'd arrays; count or -1 */
-static long read_table(const char *file, double **r, double **f)
+/* A tip file (examples/tip_csv.h) -> malloc'd r, f and the file line of
+ * each pair, at most TIP_POINTS_MAX pairs and TIP_BYTES_MAX bytes (a device
+ * that never ends, /dev/zero, is refused at its first NUL byte). Returns the
+ * count, or 2 after one line on stderr naming file:line. */
+static long read_table(const char *file, double **r, double **f, long **lines)
 {
     FILE *fp = fopen(file, "rb");
     char *text = NULL;
     size_t len = 0, cap = 0, got;
-    long n = -1;
+    long n = -4, line = 0; /* -4: out of memory */
+    *r = *f = NULL;
+    *lines = NULL;
     if (fp == NULL) {
-        return -1;
+        return -usage_error("cannot open", file);
     }
     do {
+        const char *nul;
         if (len == cap) {
-            char *t = realloc(text, cap = cap ? 2 * cap : 65536);
+            char *t = cap >= TIP_BYTES_MAX ? NULL : realloc(text, cap = cap ? 2 * cap : 65536);
             if (t == NULL) {
-                break;
+                (void)fclose(fp);
+                free(text);
+                if (cap > TIP_BYTES_MAX) {
+                    return -usage_errf("%s: larger than %lu bytes (%ld lines of %d characters)", file,
+                                       (unsigned long)TIP_BYTES_MAX, TIP_POINTS_MAX, TIP_CSV_LINE_MAX - 1);
+                }
+                return -usage_error("out of memory reading", file);
             }
             text = t;
         }
         got = fread(text + len, 1, cap - len, fp);
+        nul = memchr(text + len, '\0', got);
         len += got;
-    } while (got > 0);
-    if (!ferror(fp) && feof(fp)) {
-        size_t lines = tip_csv_lines(text, len) + 1;
-        *r = malloc(lines * sizeof **r);
-        *f = malloc(lines * sizeof **f);
-        if (*r != NULL && *f != NULL) {
-            n = tip_csv_parse(text, len, *r, *f, lines);
+        if (nul != NULL) {
+            (void)fclose(fp);
+            line = (long)tip_csv_lines(text, (size_t)(nul - text) + 1);
+            free(text);
+            return -usage_errf("%s:%ld: a NUL byte (not a text file)", file, line);
         }
+    } while (got > 0);
+    if (ferror(fp)) {
+        (void)fclose(fp);
+        free(text);
+        return -usage_error("read error in", file);
+    }
+    (void)fclose(fp); /* read only: nothing to lose */
+    {
+        size_t m = tip_csv_lines(text, len);
+        m = m > (size_t)TIP_POINTS_MAX ? (size_t)TIP_POINTS_MAX : m < 1 ? 1 : m;
+        *r = malloc(m * sizeof **r);
+        *f = malloc(m * sizeof **f);
+        *lines = malloc(m * sizeof **lines);
+        if (*r != NULL && *f != NULL && *lines != NULL) {
+            n = tip_csv_parse_at(text, len, *r, *f, m, *lines, &line);
+        }
+        free(text);
         if (n < 0) {
             free(*r);
             free(*f);
+            free(*lines);
             *r = *f = NULL;
-            n = -1;
+            *lines = NULL;
+            if (n == -1) {
+                return -usage_errf("%s:%ld: %s", file, line,
+                                   "expected two numbers r f (separated by a comma, tabs or spaces), "
+                                   "a comment (#) or a header");
+            }
+            if (n == -2) {
+                return -usage_errf("%s:%ld: more than %ld points", file, line, TIP_POINTS_MAX);
+            }
+            if (n == -3) {
+                return -usage_errf("%s:%ld: line longer than %d characters", file, line, TIP_CSV_LINE_MAX - 1);
+            }
+            return -usage_error("out of memory reading", file);
         }
     }
-    (void)fclose(fp); /* read only: nothing to lose */
-    free(text);
     return n;
 }
 
-#define CLI_T float
-#define CLI_SFX(name) name##_f32
-#define CLI_NAME "f32"
-#define CLI_LIT "f"
-#define CLI_FMT "%.9g"
-#define CLI_EFMT "%.8e"
-#define HOST_T CLI_T
-#define HOST_SFX CLI_SFX
-#include "mdr_host_t.h"
-#include "mdr_cli_t.h"
-#undef CLI_T
-#undef CLI_SFX
-#undef CLI_FMT
-#undef CLI_EFMT
-#undef CLI_NAME
-#undef CLI_LIT
-#define CLI_T double
-#define CLI_SFX(name) name##_f64
-#define CLI_NAME "f64"
-#define CLI_LIT ""
-#define CLI_FMT "%.17g"
-#define CLI_EFMT "%.16e"
-#include "mdr_host_t.h"
-#include "mdr_cli_t.h"
+/* A tip file (r,f rows) read, checked and differenced: the radii, heights,
+ * interval slopes formed in double (tip_slopes) and each row's line, all
+ * malloc'd (the caller frees them, also on failure); the count, or -1 after
+ * the line naming the file, line and problem. */
+static long load_tip(const char *file, double **r, double **f, double **s, long **lines)
+{
+    long k, n = read_table(file, r, f, lines);
+    *s = NULL;
+    if (n < 0 || *r == NULL || *f == NULL || *lines == NULL) {
+        return -1; /* named by read_table() */
+    }
+    *s = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof **s);
+    if (*s == NULL) {
+        (void)usage_error("out of memory reading", file);
+        return -1;
+    }
+    for (k = 0; k < n; k++) {
+        if (!is_finite((*r)[k]) || !is_finite((*f)[k])) {
+            (void)usage_errf("%s:%ld: not a finite number", file, (*lines)[k]);
+            return -1;
+        }
+        if (k > 0 && !((*r)[k] > (*r)[k - 1])) {
+            (void)usage_errf("%s:%ld: r must increase strictly (r = %.17g after %.17g)", file, (*lines)[k],
+                             (*r)[k], (*r)[k - 1]);
+            return -1;
+        }
+    }
+    (void)tip_slopes(*r, *f, n, *s); /* r increases: checked above */
+    return n;
+}
 
 /* profile name -> kind and the flags of its parameters */
 static const struct {
@@ -201,6 +238,272 @@ static const struct {
     {"flattip", MDR_PROFILE_FLATTIP, {"--R", "--b", NULL}},
     {"wavy", MDR_PROFILE_WAVY, {"--R", "--h", "--lambda"}},
 };
+
+/* ---- JSON: the inputs and units every object carries -------------------- */
+
+/* the SI unit of each quantity key (counts, flags and names have none) */
+static const struct {
+    const char *key, *unit;
+} unit_of[] = {
+    {"a", "m"}, {"d", "m"}, {"F", "N"}, {"z", "m"}, {"r", "m"}, {"dd_da", "1"}, {"dF_da", "N/m"},
+    {"dl", "m"}, {"K_I", "Pa m^0.5"}, {"G_rel", "J/m^2"}, {"G", "J/m^2"}, {"d_eq", "m"}, {"F_eq", "N"},
+    {"a_start", "m"}, {"max_tensile_F", "N"}, {"max_tensile_d", "m"}, {"sigma", "Pa"},
+    {"r_over_a_c", "1"}, {"pull_off_F", "N"}, {"pull_off_d", "m"}, {"dissipated", "J"},
+    {"a_max", "m"}, {"a0", "m"}, {"d0", "m"}, {"F0", "N"}, {"a1", "m"}, {"d1", "m"}, {"F1", "N"},
+    {"R", "m"}, {"theta", "rad"}, {"C", "m^(1-n)"}, {"n", "1"}, {"b", "m"}, {"h", "m"},
+    {"lambda", "m"}, {"E", "Pa"}, {"w", "J/m^2"}, {"w_adv", "J/m^2"}, {"k_m", "N/m"},
+    {"E_err", "Pa"}, {"w_err", "J/m^2"}, {"w_adv_err", "J/m^2"}, {"z0", "m"}, {"z0_err", "m"},
+    {"F_base", "N"}, {"F_base_err", "N"}, {"mu", "1"}, {"R_mu", "m"}, {"z_e", "m"}, {"rms", "N"},
+    {"pull_off_z", "m"}, {"a_pull_off", "m"}, {"E0", "Pa"}, {"w0", "J/m^2"},
+};
+
+/* a JSON writer that remembers the keys it wrote, for the units object */
+typedef struct {
+    FILE *fp;
+    const char *keys[48];
+    int nk, first, f64; /* f64: 17 digits, else 9 (a float's round trip) */
+} cli_json;
+
+static void json_begin(cli_json *j, FILE *fp, int f64)
+{
+    j->fp = fp;
+    j->nk = 0;
+    j->first = 1;
+    j->f64 = f64;
+    fputc('{', fp);
+}
+
+/* remember a key (for the units object) without writing it */
+static void json_key_only(cli_json *j, const char *key)
+{
+    int i;
+    for (i = 0; i < j->nk; i++) {
+        if (strcmp(j->keys[i], key) == 0) {
+            return;
+        }
+    }
+    if (j->nk < (int)(sizeof j->keys / sizeof j->keys[0])) {
+        j->keys[j->nk++] = key;
+    }
+}
+
+static void json_key(cli_json *j, const char *key)
+{
+    fprintf(j->fp, "%s\"%s\": ", j->first ? "" : ", ", key);
+    j->first = 0;
+    json_key_only(j, key);
+}
+
+static void json_num(cli_json *j, const char *key, double v)
+{
+    json_key(j, key);
+    fprintf(j->fp, j->f64 ? "%.17g" : "%.9g", v);
+}
+
+static void json_str(cli_json *j, const char *key, const char *v)
+{
+    json_key(j, key);
+    fputc('"', j->fp);
+    for (; *v; v++) {
+        unsigned char ch = (unsigned char)*v;
+        if (ch == '"' || ch == '\\') {
+            fprintf(j->fp, "\\%c", ch);
+        } else if (ch < 0x20) {
+            fprintf(j->fp, "\\u%04x", ch);
+        } else {
+            fputc(ch, j->fp);
+        }
+    }
+    fputc('"', j->fp);
+}
+
+static const char *control_name(uint8_t c)
+{
+    return c == MDR_CONTROL_LOAD ? "load" : c == MDR_CONTROL_GRIPS ? "grips" : "machine";
+}
+
+/* The "units" object of the keys written by j (the result) and in (its
+ * input object; "path" in pu), and the end of the object. */
+static void json_units(cli_json *j, const cli_json *in, const char *pu)
+{
+    json_key(j, "units");
+    fputc('{', j->fp);
+    {
+        int first = 1, i, k;
+        for (k = 0; k < j->nk + in->nk; k++) {
+            const char *key = k < j->nk ? j->keys[k] : in->keys[k - j->nk];
+            const char *u = NULL;
+            if (strcmp(key, "path") == 0) {
+                u = pu;
+            }
+            for (i = 0; u == NULL && i < (int)(sizeof unit_of / sizeof unit_of[0]); i++) {
+                if (strcmp(unit_of[i].key, key) == 0) {
+                    u = unit_of[i].unit;
+                }
+            }
+            for (i = 0; u != NULL && i < k && i < j->nk; i++) {
+                u = strcmp(j->keys[i], key) == 0 ? NULL : u; /* listed once */
+            }
+            if (u != NULL) {
+                fprintf(j->fp, "%s\"%s\": \"%s\"", first ? "" : ", ", key, u);
+                first = 0;
+            }
+        }
+    }
+    fputs("}}\n", j->fp);
+}
+
+/* The "input" object of a command's JSON (the values as given, in double)
+ * and its "units" for those keys and the result's (j: the result object's
+ * writer, whose keys are in it); ends the object. */
+static void json_end(cli_json *j, const struct cli_args *A)
+{
+    cli_json in;
+    const char *arith = A->q31 ? "q31" : A->f64 ? "f64" : "f32";
+    json_key(j, "input");
+    json_begin(&in, j->fp, 1);
+    json_str(&in, "command", cmd_names[A->cmd]);
+    if (A->kind == KIND_TABLE) {
+        json_str(&in, "profile", "table");
+        json_str(&in, "file", A->file);
+        json_num(&in, "points", (double)A->ntab);
+    } else {
+        int k;
+        json_str(&in, "profile", profiles[A->pi].name);
+        for (k = 0; k < 3 && profiles[A->pi].flags[k] != NULL; k++) {
+            json_num(&in, profiles[A->pi].flags[k] + 2, A->p[k]);
+        }
+    }
+    if (A->cmd != CMD_TABLE) {
+        json_num(&in, "E", A->E);
+        json_num(&in, "w", A->w);
+    }
+    json_str(&in, "arith", arith);
+    if (A->have_control) {
+        json_str(&in, "control", control_name(A->control));
+    }
+    if (A->have_k || A->cmd == CMD_CYCLE) {
+        json_num(&in, "k_m", A->k_m);
+    }
+    switch (A->cmd) {
+    case CMD_EQ:
+    case CMD_STRESS:
+        if (!A->have_control) {
+            json_num(&in, "a", A->a);
+        }
+        if (A->have_d) {
+            json_num(&in, "d", A->d);
+        }
+        if (A->cmd == CMD_STRESS) {
+            json_num(&in, A->have_control ? "r_over_a_c" : "r", A->r);
+        }
+        break;
+    case CMD_CURVE:
+        json_num(&in, "a_max", A->a_max);
+        json_num(&in, "n", (double)A->n);
+        break;
+    case CMD_CYCLE:
+        json_num(&in, "w_adv", A->w_adv);
+        json_num(&in, "springs", (double)A->springs);
+        if (A->have_amax) {
+            json_num(&in, "a_max", A->a_max);
+        }
+        json_num(&in, "steps_per_segment", (double)A->steps);
+        json_key(&in, "path");
+        {
+            long i;
+            for (i = 0; i < A->npath; i++) {
+                fprintf(j->fp, "%s%.17g", i ? ", " : "[", A->path[i]);
+            }
+        }
+        fputc(']', j->fp);
+        break;
+    case CMD_TABLE:
+        json_num(&in, "springs", (double)A->springs);
+        if (A->have_amax) {
+            json_num(&in, "a_max", A->a_max);
+        }
+        break;
+    default:
+        break;
+    }
+    if ((A->cmd == CMD_CRITICAL || A->cmd == CMD_STRESS) && A->have_a_start) {
+        json_num(&in, "a_start", A->a_start);
+    }
+    fputc('}', j->fp);
+    json_units(j, &in, A->control == MDR_CONTROL_LOAD ? "N" : "m");
+}
+
+/* mdr table's header declaring the table (--header FILE, or FILE.h next
+ * to --output FILE.c): 0, or 2 after one line on stderr; inc (cap bytes)
+ * gets the name the .c includes it by. */
+static int write_table_header(const struct cli_args *A, const char *sfx, unsigned n, char *inc, size_t cap)
+{
+    char hpath[1024], guard[256];
+    const char *base, *src = A->header != NULL ? A->header : A->output;
+    size_t l = strlen(src), i;
+    FILE *out;
+    if (l >= sizeof hpath || l >= cap) {
+        return usage_error("path too long", src);
+    }
+    memcpy(hpath, src, l + 1);
+    if (A->header == NULL) {
+        hpath[l - 1] = 'h'; /* FILE.c -> FILE.h */
+    }
+    base = strrchr(hpath, '/');
+    base = base != NULL ? base + 1 : hpath;
+    memcpy(inc, base, strlen(base) + 1);
+    (void)snprintf(guard, sizeof guard, "MDR_TABLE_%s_H", A->name);
+    for (i = 0; guard[i]; i++) {
+        if (guard[i] >= 'a' && guard[i] <= 'z') {
+            guard[i] = (char)(guard[i] - ('a' - 'A'));
+        }
+    }
+    out = fopen(hpath, "w");
+    if (out == NULL) {
+        return usage_error("cannot write", hpath);
+    }
+    fprintf(out,
+            "/* spring table generated by `mdr table` (libmdr %d.%d): the declaration of\n"
+            " * %s (%u springs, %s); its definition is in the generated .c. */\n"
+            "#ifndef %s\n#define %s\n\n#include \"mdr.h\"\n\n"
+            "/** springs of %s */\n#define %.*s_SPRINGS %uu\n\n"
+            "extern const mdr_table_%s %s;\n\n#endif /* %s */\n",
+            MDR_VERSION_MAJOR, MDR_VERSION_MINOR, A->name, n, sfx, guard, guard, A->name,
+            (int)strlen(guard) - 2, guard, n, sfx, A->name, guard);
+    if (fclose(out) != 0) {
+        return usage_error("cannot write", hpath);
+    }
+    return 0;
+}
+
+#define CLI_T float
+#define CLI_F64 0
+#define CLI_SFX(name) name##_f32
+#define CLI_NAME "f32"
+#define CLI_LIT "f"
+#define CLI_FMT "%.9g"
+#define CLI_EFMT "%.8e"
+#define HOST_T CLI_T
+#define HOST_SFX CLI_SFX
+#include "mdr_host_t.h"
+#include "mdr_cli_t.h"
+#undef CLI_T
+#undef CLI_F64
+#undef CLI_SFX
+#undef CLI_FMT
+#undef CLI_EFMT
+#undef CLI_NAME
+#undef CLI_LIT
+#define CLI_T double
+#define CLI_F64 1
+#define CLI_SFX(name) name##_f64
+#define CLI_NAME "f64"
+#define CLI_LIT ""
+#define CLI_FMT "%.17g"
+#define CLI_EFMT "%.16e"
+#include "mdr_host_t.h"
+#include "mdr_cli_t.h"
 
 /* The parameters of profile pi (profiles[pi].flags, in order) from the n
  * flags given (names, vals) into p[]; used[i] set for each flag taken.
@@ -233,124 +536,351 @@ static int parse_count(double v, long lo, long hi, long *out)
     return 1;
 }
 
+/* ---- the command line: flags, help -------------------------------------- */
+
+#define CLI_MAX_FLAGS 40
+
+/* one flag and its value (NULL for a flag that takes none) */
+struct cli_kv {
+    char name[40];
+    const char *val;
+};
+
+/* argv[first..] -> flag/value pairs: "--flag VALUE" or "--flag=VALUE"; the
+ * flags listed in bools take no value. Returns 0, 3 when --help or -h is
+ * among them, or 2 after one line on stderr (not a flag, a missing value, a
+ * flag given twice, too many flags). */
+static int cli_collect(int argc, char **argv, int first, const char *const *bools, struct cli_kv *kv,
+                       int *n)
+{
+    int i, k;
+    *n = 0;
+    for (i = first; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            return 3;
+        }
+    }
+    for (i = first; i < argc; i++) {
+        const char *f = argv[i], *eq = strchr(f, '=');
+        size_t len = eq != NULL ? (size_t)(eq - f) : strlen(f);
+        int is_bool = 0;
+        if (strncmp(f, "--", 2) != 0 || len <= 2) {
+            return usage_error("expected a flag --NAME, found", f);
+        }
+        if (len >= sizeof kv[0].name) {
+            return usage_errf("unknown flag: %.*s", (int)len, f);
+        }
+        if (*n == CLI_MAX_FLAGS) {
+            return usage_error("too many flags", f);
+        }
+        memcpy(kv[*n].name, f, len);
+        kv[*n].name[len] = '\0';
+        for (k = 0; bools != NULL && bools[k] != NULL; k++) {
+            is_bool |= strcmp(kv[*n].name, bools[k]) == 0;
+        }
+        for (k = 0; k < *n; k++) {
+            if (strcmp(kv[k].name, kv[*n].name) == 0) {
+                return usage_error("flag given twice", kv[*n].name);
+            }
+        }
+        if (is_bool) {
+            if (eq != NULL) {
+                return usage_error("flag takes no value", kv[*n].name);
+            }
+            kv[*n].val = NULL;
+        } else if (eq != NULL) {
+            kv[*n].val = eq + 1;
+        } else if (i + 1 < argc) {
+            kv[*n].val = argv[++i];
+        } else {
+            return usage_error("flag needs a value", kv[*n].name);
+        }
+        (*n)++;
+    }
+    return 0;
+}
+
+static const char usage_main[] =
+    "usage: mdr COMMAND <profile> <material> [flags]     (mdr COMMAND --help for one)\n"
+    "\n"
+    "  eq        the equilibrium state at contact radius --a (or the state (a, d))\n"
+    "  critical  the critical (pull-off) state under --control load|grips|machine\n"
+    "  curve     the equilibrium curve a,d,F (CSV) up to --a-max\n"
+    "  stress    the normal stress sigma(r) in the contact\n"
+    "  cycle     the real-time spring engine along a path (CSV + JSON summary)\n"
+    "  table     the spring table as C source (for flash), and its header\n"
+    "  fit       E*, w of a measured force curve (or a map of curves)\n"
+    "  help      this text (mdr help COMMAND: the command's)\n"
+    "\n"
+    "  <profile>:  --profile paraboloid --R R | cone --theta RAD | powerlaw --C C --n N |\n"
+    "              flatpunch --a0 A0 | sphere --R R | flattip --R R --b B |\n"
+    "              wavy --R R --h H --lambda L | table --file FILE\n"
+    "  <material>: --E ESTAR [Pa, effective modulus] --w W [J/m^2, work of adhesion]\n"
+    "  --arith f32|f64 (default f32; cycle and table also q31)\n"
+    "\n"
+    "Every flag is --flag VALUE or --flag=VALUE, given once; SI units (m, N, Pa, J/m^2).\n"
+    "Results on stdout, errors on stderr (one line). Exit status: 0 ok, 1 a computation\n"
+    "that fails (iteration cap, edge beyond the table), 2 bad arguments or input.\n"
+    "mdr --version: the library's version.\n";
+
+static const char *const usage_cmd[NCMD] = {
+    /* eq */
+    "usage: mdr eq <profile> <material> --a A [--d D] [--arith f32|f64]\n"
+    "  the equilibrium state at contact radius A [m]: JSON a, d, F, dd_da, dF_da, dl,\n"
+    "  K_I [Pa m^0.5], G_rel [J/m^2] (energy release rate K_I^2/(2E*); \"G\" is its old\n"
+    "  name, kept), stable_load, stable_grips. With --d D [m]: the state (A, D) as\n"
+    "  given, pinned or not (F, K_I, G_rel of that state; d_eq, F_eq the equilibrium's).\n",
+    /* critical */
+    "usage: mdr critical <profile> <material> --control load|grips|machine\n"
+    "                    [--k-machine K] [--a-start A] [--arith f32|f64]\n"
+    "  the critical state (the pull-off): JSON a, d, F, jumps, a_start, max_tensile_F,\n"
+    "  max_tensile_d (the most tensile force of the quasi-static path to the pull-off).\n"
+    "  --k-machine K [N/m]: the machine stiffness, with --control machine only.\n",
+    /* curve */
+    "usage: mdr curve <profile> <material> --a-max A --n N [--arith f32|f64]\n"
+    "  CSV a,d,F of N equilibrium states at a = A i/N, i = 1..N. With --profile\n"
+    "  powerlaw (whose exponent is --n) give the count as --points N.\n",
+    /* stress */
+    "usage: mdr stress <profile> <material> --a A [--d D] --r R [--arith f32|f64]\n"
+    "       mdr stress <profile> <material> --control MODE [--k-machine K] [--a-start A] --r S\n"
+    "  JSON sigma [Pa] at radius R [m] of the equilibrium (or the state (A, D)); with\n"
+    "  --control at the critical state, r = S a_c with 0 <= S < 1.\n",
+    /* cycle */
+    "usage: mdr cycle <profile> <material> --control load|grips|machine --path V1,V2,...\n"
+    "                 --steps-per-segment S [--k-machine K] [--w-adv W] [--springs N]\n"
+    "                 [--a-max A] [--arith f32|f64|q31] [--summary FILE]\n"
+    "  drives the spring engine along the piecewise-linear path of the controlled\n"
+    "  variable (d [m], F [N] or z [m]). CSV step,z,d,F,a,event on stdout; the JSON\n"
+    "  summary (pull_off_F, pull_off_d, events, dissipated, cycles, jumps, springs,\n"
+    "  a_max, max_tensile_F, max_tensile_d, event_list, input, units) on stderr, or in\n"
+    "  FILE with --summary FILE. --w-adv W: work of adhesion on approach (default 0,\n"
+    "  echoed in the summary). --springs N: default 1024 (2..16384; q31: a power of\n"
+    "  two). --a-max: the table extent, default 1.25 x the largest radius the path can\n"
+    "  reach. q31: the fixed-point engine on the table converted from the f64 one; the\n"
+    "  path must stay within its input range (+-2 units of D0, F0 or Z0).\n",
+    /* table */
+    "usage: mdr table <profile> [--springs N] --a-max A [--name NAME] [--arith f32|f64|q31]\n"
+    "                 [--output FILE.c] [--header FILE.h]\n"
+    "  the spring table as const C arrays (for flash), on stdout or in FILE.c; the\n"
+    "  header declaring it goes to FILE.h (--header), or next to FILE.c (--output,\n"
+    "  FILE.h); the .c then includes it. q31: N must be a power of two.\n",
+    /* fit */
+    "usage: mdr fit (--curve FILE | --map FILE) <profile> --k-machine K [--arith f32|f64]\n"
+    "               [--method full|two-point] [--approach] [--z-e ZE] [--E0 E --w0 W]\n"
+    "               [--model FILE] [--jobs N]\n"
+    "  fits E*, w (and the base offset z0, force baseline F_base) to a measured\n"
+    "  force curve z,F (CSV, --curve: JSON on stdout) or to every curve of a map\n"
+    "  (curve,z,F, --map: CSV on stdout). See docs/fitting.md.\n",
+};
+
+/* --help anywhere, `mdr help [CMD]`, --version: 0, or -1 to go on */
+static int cli_help(int argc, char **argv)
+{
+    if (argc >= 2 && strcmp(argv[1], "--version") == 0 && argc == 2) {
+        printf("mdr (libmdr %d.%d)\n", MDR_VERSION_MAJOR, MDR_VERSION_MINOR);
+        return 0;
+    }
+    if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+                      strcmp(argv[1], "help") == 0)) {
+        if (argc == 3 && strcmp(argv[1], "help") == 0) {
+            int k;
+            for (k = 0; k < NCMD; k++) {
+                if (strcmp(argv[2], cmd_names[k]) == 0) {
+                    fputs(usage_cmd[k], stdout);
+                    return 0;
+                }
+            }
+            return usage_error("help: unknown command", argv[2]);
+        }
+        if (argc > 2 && strcmp(argv[1], "help") == 0) {
+            return usage_error("help takes one command", argv[3]);
+        }
+        fputs(usage_main, stdout);
+        return 0;
+    }
+    return -1;
+}
+
+/* the arithmetic's range: a value float cannot hold (beyond FLT_MAX, or
+ * nonzero below FLT_MIN where it would lose digits or become 0) */
+static int outside_f32(double v)
+{
+    double m = v < 0 ? -v : v;
+    return m > (double)FLT_MAX || (m != 0.0 && m < (double)FLT_MIN);
+}
+
+/* the commands that take a flag (bits of CMD_*) */
+#define C_(c) (1u << (c))
+#define C_ALL (C_(CMD_EQ) | C_(CMD_CRITICAL) | C_(CMD_CURVE) | C_(CMD_STRESS) | C_(CMD_CYCLE) | C_(CMD_TABLE))
+static const struct {
+    const char *name;
+    unsigned cmds;
+} flag_cmds[] = {
+    {"--profile", C_ALL},
+    {"--arith", C_ALL},
+    {"--file", C_ALL},
+    {"--control", C_(CMD_CRITICAL) | C_(CMD_STRESS) | C_(CMD_CYCLE)},
+    {"--path", C_(CMD_CYCLE)},
+    {"--summary", C_(CMD_CYCLE)},
+    {"--name", C_(CMD_TABLE)},
+    {"--header", C_(CMD_TABLE)},
+    {"--output", C_(CMD_TABLE)},
+    {"--E", C_ALL & ~C_(CMD_TABLE)},
+    {"--w", C_ALL & ~C_(CMD_TABLE)},
+    {"--a", C_(CMD_EQ) | C_(CMD_STRESS)},
+    {"--d", C_(CMD_EQ) | C_(CMD_STRESS)},
+    {"--r", C_(CMD_STRESS)},
+    {"--a-max", C_(CMD_CURVE) | C_(CMD_CYCLE) | C_(CMD_TABLE)},
+    {"--n", C_(CMD_CURVE)},
+    {"--points", C_(CMD_CURVE)},
+    {"--springs", C_(CMD_CYCLE) | C_(CMD_TABLE)},
+    {"--steps-per-segment", C_(CMD_CYCLE)},
+    {"--w-adv", C_(CMD_CYCLE)},
+    {"--k-machine", C_(CMD_CRITICAL) | C_(CMD_STRESS) | C_(CMD_CYCLE)},
+    {"--a-start", C_(CMD_CRITICAL) | C_(CMD_STRESS)},
+};
+
+/* 1: f is a flag of command c's own (not only a profile parameter) */
+static int cmd_has(const char *f, int c)
+{
+    int k;
+    for (k = 0; k < (int)(sizeof flag_cmds / sizeof flag_cmds[0]); k++) {
+        if (strcmp(f, flag_cmds[k].name) == 0) {
+            return (flag_cmds[k].cmds & C_(c)) != 0;
+        }
+    }
+    return 0;
+}
+
+/* 1: a flag of command c (its own, or a profile parameter) */
+static int flag_known(const char *f, int c, int *of_profile)
+{
+    int k, i;
+    *of_profile = 0;
+    for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
+        for (i = 0; i < 3 && profiles[k].flags[i] != NULL; i++) {
+            *of_profile |= strcmp(f, profiles[k].flags[i]) == 0;
+        }
+    }
+    for (k = 0; k < (int)(sizeof flag_cmds / sizeof flag_cmds[0]); k++) {
+        if (strcmp(f, flag_cmds[k].name) == 0) {
+            return (flag_cmds[k].cmds & C_(c)) != 0 || *of_profile ? 1 : -1;
+        }
+    }
+    return *of_profile ? 1 : 0;
+}
+
 #include "mdr_fit_cli.h"
 
-int main(int argc, char **argv)
+static void free_args(struct cli_args *A)
 {
-    static const char *cmds[] = {"eq", "critical", "curve", "stress", "cycle", "table"};
-    struct cli_args A;
-    const char *profile = NULL;
-    const char *names[32];
-    double vals[32];
-    int nflag = 0, i, k, rc;
-    int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_n = 0, have_steps = 0;
-    int used[32] = {0};
+    free(A->path);
+    free(A->tr);
+    free(A->tf);
+    free(A->ts);
+    free(A->tline);
+}
 
-    if (argc >= 2 && strcmp(argv[1], "fit") == 0) {
-        return fit_main(argc, argv);
-    }
-    memset(&A, 0, sizeof A);
-    A.springs = 1024;
-    A.name = "mdr_tip";
-    if (argc < 2) {
-        return usage_error("missing command (eq, critical, curve, stress, cycle, table)", NULL);
-    }
-    A.cmd = -1;
-    for (k = 0; k < (int)(sizeof cmds / sizeof cmds[0]); k++) {
-        if (strcmp(argv[1], cmds[k]) == 0) {
-            A.cmd = k;
+static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
+{
+    const char *profile = NULL;
+    const char *names[CLI_MAX_FLAGS];
+    double vals[CLI_MAX_FLAGS];
+    int nflag = 0, i;
+    int have_E = 0, have_w = 0, have_a = 0, have_r = 0, have_n = 0, have_steps = 0;
+    int used[CLI_MAX_FLAGS] = {0};
+    const char *path_arg = NULL;
+
+    for (i = 0; i < nkv; i++) {
+        const char *f = kv[i].name, *v = kv[i].val;
+        int of_profile, known = flag_known(f, A->cmd, &of_profile);
+        if (known == 0) {
+            return usage_error("unknown flag", f);
         }
-    }
-    if (A.cmd < 0) {
-        return usage_error("unknown command", argv[1]);
-    }
-    for (i = 2; i < argc; i++) {
-        const char *f = argv[i];
-        if (strncmp(f, "--", 2) != 0) {
-            return usage_error("expected a flag", f);
-        }
-        if (i + 1 >= argc) {
-            return usage_error("flag needs a value", f);
+        if (known < 0) {
+            return usage_errf("%s: not a flag of mdr %s (mdr %s --help)", f, cmd_names[A->cmd],
+                              cmd_names[A->cmd]);
         }
         if (strcmp(f, "--profile") == 0) {
-            profile = argv[++i];
-            continue;
-        }
-        if (strcmp(f, "--arith") == 0) {
-            const char *v = argv[++i];
+            profile = v;
+        } else if (strcmp(f, "--arith") == 0) {
             if (strcmp(v, "f32") == 0) {
-                A.f64 = 0;
+                A->f64 = 0;
             } else if (strcmp(v, "f64") == 0) {
-                A.f64 = 1;
+                A->f64 = 1;
             } else if (strcmp(v, "q31") == 0) {
-                A.f64 = 1; /* the q31 table and constants are set up in double */
-                A.q31 = 1;
+                A->f64 = 1; /* the q31 table and constants are set up in double */
+                A->q31 = 1;
             } else {
                 return usage_error("--arith takes f32, f64 or q31", v);
             }
-            continue;
-        }
-        if (strcmp(f, "--control") == 0) {
-            const char *v = argv[++i];
+        } else if (strcmp(f, "--control") == 0) {
             if (strcmp(v, "load") == 0) {
-                A.control = MDR_CONTROL_LOAD;
+                A->control = MDR_CONTROL_LOAD;
             } else if (strcmp(v, "grips") == 0) {
-                A.control = MDR_CONTROL_GRIPS;
+                A->control = MDR_CONTROL_GRIPS;
             } else if (strcmp(v, "machine") == 0) {
-                A.control = MDR_CONTROL_MACHINE;
+                A->control = MDR_CONTROL_MACHINE;
             } else {
                 return usage_error("--control takes load, grips or machine", v);
             }
-            A.have_control = 1;
-            continue;
-        }
-        if (strcmp(f, "--path") == 0 && A.cmd == CMD_CYCLE) {
-            free(A.path);
-            A.npath = parse_list(argv[++i], &A.path);
-            if (A.npath < 2) {
-                return usage_error("--path takes two or more numbers V1,V2,...", argv[i]);
-            }
-            continue;
-        }
-        if (strcmp(f, "--file") == 0) {
-            A.file = argv[++i];
-            continue;
-        }
-        if (strcmp(f, "--name") == 0 && A.cmd == CMD_TABLE) {
-            const char *v = argv[++i];
+            A->have_control = 1;
+        } else if (strcmp(f, "--path") == 0) {
+            path_arg = v;
+        } else if (strcmp(f, "--file") == 0) {
+            A->file = v;
+        } else if (strcmp(f, "--summary") == 0) {
+            A->summary = v;
+        } else if (strcmp(f, "--header") == 0) {
+            A->header = v;
+        } else if (strcmp(f, "--output") == 0) {
+            A->output = v;
+        } else if (strcmp(f, "--name") == 0) {
             size_t j;
             for (j = 0; v[j]; j++) {
                 char ch = v[j];
                 if (!(ch == '_' || (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
-                      (j > 0 && ch >= '0' && ch <= '9'))) {
+                      (j > 0 && ch >= '0' && ch <= '9')) || j > 200) {
                     return usage_error("--name must be a C identifier", v);
                 }
             }
             if (j == 0) {
                 return usage_error("--name must be a C identifier", v);
             }
-            A.name = v;
-            continue;
+            A->name = v;
+        } else {
+            names[nflag] = f;
+            if (!parse_num(v, &vals[nflag])) {
+                return usage_errf("%s: not a finite number: %s", f, v);
+            }
+            nflag++;
         }
-        if (nflag == 32) {
-            return usage_error("too many flags", f);
+    }
+    if (path_arg != NULL) {
+        A->npath = parse_list(path_arg, &A->path);
+        if (A->npath < 0) {
+            return usage_errf("--path: value %ld is not a finite number: %s", -A->npath, path_arg);
         }
-        names[nflag] = f;
-        if (!parse_num(argv[++i], &vals[nflag])) {
-            return usage_error("not a number", f);
+        if (A->npath == 0) {
+            return usage_error("out of memory", NULL);
         }
-        nflag++;
+        if (A->npath < 2) {
+            return usage_error("--path takes two or more numbers V1,V2,...", path_arg);
+        }
     }
     if (profile == NULL) {
         return usage_error("missing --profile", NULL);
     }
     if (strcmp(profile, "table") == 0) {
-        if (A.file == NULL) {
+        if (A->file == NULL) {
             return usage_error("--profile table needs --file FILE", NULL);
         }
-        A.kind = KIND_TABLE;
+        A->kind = KIND_TABLE;
     } else {
-        int pi = -1;
+        int pi = -1, k;
+        if (A->file != NULL) {
+            return usage_error("--file goes with --profile table", A->file);
+        }
         for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
             if (strcmp(profiles[k].name, profile) == 0) {
                 pi = k;
@@ -359,9 +889,10 @@ int main(int argc, char **argv)
         if (pi < 0) {
             return usage_error("unknown profile", profile);
         }
-        A.kind = profiles[pi].kind;
+        A->kind = profiles[pi].kind;
+        A->pi = pi;
         {
-            const char *missing = profile_params(pi, names, vals, nflag, used, A.p);
+            const char *missing = profile_params(pi, names, vals, nflag, used, A->p);
             if (missing != NULL) {
                 return usage_error("missing profile parameter", missing);
             }
@@ -369,56 +900,86 @@ int main(int argc, char **argv)
     }
     for (i = 0; i < nflag; i++) {
         const char *f = names[i];
-        int c = A.cmd;
+        int c = A->cmd, of_profile, known = flag_known(f, c, &of_profile);
         if (used[i]) {
             continue;
         }
-        if (strcmp(f, "--E") == 0 && c != CMD_TABLE) {
-            A.E = vals[i];
+        if (known <= 0 || (of_profile && !cmd_has(f, c))) {
+            return usage_errf("%s: not a parameter of --profile %s", f, profile);
+        }
+        if (strcmp(f, "--E") == 0) {
+            A->E = vals[i];
             have_E = 1;
-        } else if (strcmp(f, "--w") == 0 && c != CMD_TABLE) {
-            A.w = vals[i];
+        } else if (strcmp(f, "--w") == 0) {
+            A->w = vals[i];
             have_w = 1;
-        } else if (strcmp(f, "--a") == 0 && (c == CMD_EQ || c == CMD_STRESS)) {
-            A.a = vals[i];
+        } else if (strcmp(f, "--a") == 0) {
+            A->a = vals[i];
             have_a = 1;
-        } else if (strcmp(f, "--d") == 0 && (c == CMD_EQ || c == CMD_STRESS)) {
-            A.d = vals[i];
-            A.have_d = 1;
-        } else if (strcmp(f, "--r") == 0 && c == CMD_STRESS) {
-            A.r = vals[i];
+        } else if (strcmp(f, "--d") == 0) {
+            A->d = vals[i];
+            A->have_d = 1;
+        } else if (strcmp(f, "--r") == 0) {
+            A->r = vals[i];
             have_r = 1;
-        } else if (strcmp(f, "--a-max") == 0 && (c == CMD_CURVE || c == CMD_CYCLE || c == CMD_TABLE)) {
-            A.a_max = vals[i];
-            A.have_amax = 1;
-        } else if (strcmp(f, "--n") == 0 && c == CMD_CURVE) {
-            if (!parse_count(vals[i], 1, 10000000, &A.n)) {
-                return usage_error("--n must be an integer in [1, 1e7]", NULL);
+        } else if (strcmp(f, "--a-max") == 0) {
+            A->a_max = vals[i];
+            A->have_amax = 1;
+        } else if (strcmp(f, "--n") == 0 || strcmp(f, "--points") == 0) {
+            if (have_n) {
+                return usage_error("give the count once (--n or --points)", f);
+            }
+            if (!parse_count(vals[i], 1, 10000000, &A->n)) {
+                return usage_errf("%s must be an integer in [1, 1e7]", f);
             }
             have_n = 1;
-        } else if (strcmp(f, "--springs") == 0 && (c == CMD_CYCLE || c == CMD_TABLE)) {
-            if (!parse_count(vals[i], MDR_SPRINGS_MIN, MDR_SPRINGS_MAX, &A.springs)) {
-                return usage_error("--springs must be an integer in [2, 16384]", NULL);
+        } else if (strcmp(f, "--springs") == 0) {
+            if (!parse_count(vals[i], MDR_SPRINGS_MIN, MDR_SPRINGS_MAX, &A->springs)) {
+                return usage_errf("--springs must be an integer in [%d, %d]", (int)MDR_SPRINGS_MIN,
+                                  (int)MDR_SPRINGS_MAX);
             }
-        } else if (strcmp(f, "--steps-per-segment") == 0 && c == CMD_CYCLE) {
-            if (!parse_count(vals[i], 1, 10000000, &A.steps)) {
+        } else if (strcmp(f, "--steps-per-segment") == 0) {
+            if (!parse_count(vals[i], 1, 10000000, &A->steps)) {
                 return usage_error("--steps-per-segment must be an integer in [1, 1e7]", NULL);
             }
             have_steps = 1;
-        } else if (strcmp(f, "--w-adv") == 0 && c == CMD_CYCLE) {
-            A.w_adv = vals[i];
-        } else if (strcmp(f, "--k-machine") == 0 &&
-                   (c == CMD_CRITICAL || c == CMD_STRESS || c == CMD_CYCLE)) {
-            A.k_m = vals[i];
-        } else if (strcmp(f, "--a-start") == 0 && c == CMD_CRITICAL) {
-            A.a_start = vals[i];
-            A.have_a_start = 1;
+        } else if (strcmp(f, "--w-adv") == 0) {
+            A->w_adv = vals[i];
+            A->have_w_adv = 1;
+        } else if (strcmp(f, "--k-machine") == 0) {
+            A->k_m = vals[i];
+            A->have_k = 1;
         } else {
-            return usage_error("unknown or misplaced flag", f);
+            A->a_start = vals[i];
+            A->have_a_start = 1;
         }
     }
-    if (A.cmd == CMD_TABLE) {
-        A.E = 1.0; /* geometry only: any valid material */
+    /* a value the arithmetic cannot hold is refused here, by name, not
+     * turned into 0 or inf by the conversion */
+    if (!A->f64) {
+        for (i = 0; i < nflag; i++) {
+            if (outside_f32(vals[i])) {
+                return usage_errf("%s %.9g: outside the range of --arith f32 (0 or |v| in [%.9g, %.9g])",
+                                  names[i], vals[i], (double)FLT_MIN, (double)FLT_MAX);
+            }
+        }
+        for (i = 0; i < A->npath; i++) {
+            if (outside_f32(A->path[i])) {
+                return usage_errf("--path value %ld (%.9g): outside the range of --arith f32", i + 1,
+                                  A->path[i]);
+            }
+        }
+    }
+    /* the path's interpolation a + (b - a) j / S (mdr_host_path_value())
+     * stays finite, between a and b, when (b - a) S is finite */
+    for (i = 0; i + 1 < A->npath; i++) {
+        if (!is_finite((A->path[i + 1] - A->path[i]) * (double)(A->steps > 0 ? A->steps : 1))) {
+            return usage_errf("--path segment %ld (%.9g to %.9g): the interpolation overflows", i + 1,
+                              A->path[i], A->path[i + 1]);
+        }
+    }
+    if (A->cmd == CMD_TABLE) {
+        A->E = 1.0; /* geometry only: any valid material */
     } else {
         if (!have_E) {
             return usage_error("missing --E", NULL);
@@ -427,81 +988,116 @@ int main(int argc, char **argv)
             return usage_error("missing --w", NULL);
         }
     }
-    switch (A.cmd) {
+    switch (A->cmd) {
     case CMD_EQ:
         if (!have_a) {
             return usage_error("missing --a", NULL);
         }
         break;
     case CMD_CURVE:
-        if (!A.have_amax || !have_n) {
-            return usage_error("curve needs --a-max and --n", NULL);
+        if (!A->have_amax || !have_n) {
+            return usage_error("curve needs --a-max and --n (--points with --profile powerlaw)", NULL);
         }
         break;
     case CMD_CRITICAL:
-        if (!A.have_control) {
+        if (!A->have_control) {
             return usage_error("missing --control", NULL);
         }
         break;
     case CMD_CYCLE:
-        if (!A.have_control) {
+        if (!A->have_control) {
             return usage_error("missing --control", NULL);
         }
-        if (A.path == NULL || !have_steps) {
+        if (A->path == NULL || !have_steps) {
             return usage_error("cycle needs --path V1,V2,... and --steps-per-segment S", NULL);
         }
         break;
     case CMD_TABLE:
-        if (!A.have_amax && A.kind != KIND_TABLE) {
+        if (!A->have_amax && A->kind != KIND_TABLE) {
             return usage_error("table needs --a-max", NULL);
         }
         break;
     default:
-        if (!have_r || (have_a == A.have_control)) {
+        if (!have_r || (have_a == A->have_control)) {
             return usage_error("stress needs --r and either --a or --control", NULL);
         }
-        if (A.have_d && !have_a) {
+        if (A->have_d && !have_a) {
             return usage_error("--d needs --a (a state (a, d) as given)", NULL);
+        }
+        if (A->have_a_start && !A->have_control) {
+            return usage_error("--a-start goes with --control (the critical state)", NULL);
         }
         break;
     }
-    if (A.have_control && A.control == MDR_CONTROL_MACHINE && !(A.k_m > 0.0)) {
+    if (A->have_control && A->control == MDR_CONTROL_MACHINE && !(A->k_m > 0.0)) {
         return usage_error("--control machine needs --k-machine > 0", NULL);
     }
-    if (A.kind == KIND_TABLE) {
-        A.ntab = read_table(A.file, &A.tr, &A.tf);
-        if (A.ntab < 0) {
-            return usage_error("cannot read r,f pairs from", A.file);
-        }
-        if (A.ntab > 65535) {
-            free(A.tr);
-            free(A.tf);
-            return usage_error("more than 65535 points in", A.file);
-        }
-        A.ts = malloc((size_t)(A.ntab > 1 ? A.ntab - 1 : 1) * sizeof *A.ts);
-        if (A.ts == NULL || tip_slopes(A.tr, A.tf, A.ntab, A.ts) != 0) {
-            free(A.tr);
-            free(A.tf);
-            free(A.ts);
-            return usage_error("r must increase strictly in", A.file);
-        }
+    if (A->have_k && A->cmd != CMD_CYCLE && A->control != MDR_CONTROL_MACHINE) {
+        return usage_error("--k-machine goes with --control machine", NULL);
     }
-    if (A.q31 && A.cmd != CMD_CYCLE && A.cmd != CMD_TABLE) {
-        free(A.path);
-        free(A.tr);
-        free(A.tf);
-        free(A.ts);
+    if (A->q31 && A->cmd != CMD_CYCLE && A->cmd != CMD_TABLE) {
         return usage_error("--arith q31 works with cycle and table only", NULL);
     }
-    rc = A.f64 ? run_f64(&A) : run_f32(&A);
-    free(A.path);
-    free(A.tr);
-    free(A.tf);
-    free(A.ts);
-    /* the results are on stdout: a write error (a full disk) fails the run */
-    if (fflush(stdout) != 0 || ferror(stdout)) {
-        perror("mdr: stdout");
-        return 1;
+    if (A->output != NULL && A->header == NULL) {
+        size_t l = strlen(A->output);
+        if (l < 3 || strcmp(A->output + l - 2, ".c") != 0) {
+            return usage_error("--output names a .c file (the header goes next to it)", A->output);
+        }
     }
+    if (A->kind == KIND_TABLE) {
+        A->ntab = load_tip(A->file, &A->tr, &A->tf, &A->ts, &A->tline);
+        if (A->ntab < 0) {
+            return 2; /* named by load_tip() */
+        }
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    struct cli_args A;
+    struct cli_kv kv[CLI_MAX_FLAGS];
+    int nkv, k, rc;
+
+    if (argc < 2) {
+        fputs(usage_main, stderr);
+        return 2;
+    }
+    rc = cli_help(argc, argv);
+    if (rc >= 0) {
+        return rc;
+    }
+    memset(&A, 0, sizeof A);
+    A.springs = 1024;
+    A.name = "mdr_tip";
+    A.cmd = -1;
+    for (k = 0; k < NCMD; k++) {
+        if (strcmp(argv[1], cmd_names[k]) == 0) {
+            A.cmd = k;
+        }
+    }
+    if (A.cmd < 0) {
+        return usage_errf("unknown command: %s (mdr --help)", argv[1]);
+    }
+    if (A.cmd == CMD_FIT) {
+        return fit_main(argc, argv);
+    }
+    rc = cli_collect(argc, argv, 2, NULL, kv, &nkv);
+    if (rc == 3) {
+        fputs(usage_cmd[A.cmd], stdout);
+        return 0;
+    }
+    if (rc == 0) {
+        rc = parse_args(&A, kv, nkv);
+    }
+    if (rc == 0) {
+        rc = A.f64 ? run_f64(&A) : run_f32(&A);
+        /* the results are on stdout: a write error (a full disk) fails the run */
+        if (fflush(stdout) != 0 || ferror(stdout)) {
+            perror("mdr: stdout");
+            rc = 1;
+        }
+    }
+    free_args(&A);
     return rc;
 }

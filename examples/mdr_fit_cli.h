@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_fit_cli.h: `mdr fit`, measured force curves to E*, w, contact point,
  * baseline and regime (lib/include/mdr_fit.h). Included once by mdr_cli.c,
@@ -46,7 +47,7 @@
 
 struct fit_args {
     const char *file, *model, *tipfile;
-    int map, f64, approach, jobs;
+    int map, f64, approach, jobs, pi, have_E0; /* pi: -1 for --profile table */
     uint8_t kind, method;
     double p[3], k_m, z_e, E0, w0;
     /* --profile table: the samples as each arithmetic's contact takes them
@@ -153,28 +154,51 @@ typedef struct {
     long line;
 } fit_reader;
 
-/* the next line (newline removed) in r->buf: its length, or -1 at the end
- * of the file, on a read error (ferror tells) or out of memory */
+/* the longest line and the most points of one curve that mdr fit reads */
+#define FIT_LINE_MAX 65536
+#define FIT_POINTS_MAX ((size_t)1 << 24)
+
+static int fit_bad_line(const fit_reader *r, const char *why);
+
+/* the next line (newline removed) in r->buf: its length, -1 at the end of
+ * the file, on a read error (ferror tells) or out of memory, or -2 after a
+ * message naming the line: a NUL byte (not a text file: /dev/zero is
+ * refused at once), a line longer than FIT_LINE_MAX - 2 characters */
 static long fit_getline(fit_reader *r)
 {
     size_t len = 0;
     for (;;) {
+        size_t room, got;
         if (r->cap - len < 2) {
             size_t nc = r->cap ? 2 * r->cap : 4096;
-            char *b = realloc(r->buf, nc);
+            char *b = nc > FIT_LINE_MAX ? NULL : realloc(r->buf, nc);
             if (b == NULL) {
+                if (nc > FIT_LINE_MAX) {
+                    r->line++;
+                    (void)fit_bad_line(r, "line longer than 65534 characters");
+                    return -2;
+                }
                 return -1;
             }
             r->buf = b;
             r->cap = nc;
         }
-        if (fgets(r->buf + len, (int)(r->cap - len > INT_MAX ? INT_MAX : r->cap - len), r->fp) == NULL) {
+        room = r->cap - len;
+        if (fgets(r->buf + len, (int)(room > INT_MAX ? INT_MAX : room), r->fp) == NULL) {
             if (len == 0) {
                 return -1;
             }
             break;
         }
-        len += strlen(r->buf + len);
+        got = strlen(r->buf + len);
+        /* fgets stops at a newline, at the end of the file or with the
+         * buffer full: anything else is a NUL byte in the text */
+        if ((got == 0 || r->buf[len + got - 1] != '\n') && got + 1 < room && !feof(r->fp)) {
+            r->line++;
+            (void)fit_bad_line(r, "a NUL byte (not a text file)");
+            return -2;
+        }
+        len += got;
         if (len > 0 && r->buf[len - 1] == '\n') {
             len--;
             break;
@@ -261,8 +285,17 @@ typedef struct {
     fit_res res;
 } fit_curve;
 
+/* why fit_push() failed */
+static const char *fit_push_why(const fit_curve *c)
+{
+    return c->n >= FIT_POINTS_MAX ? "more than 16777216 points in one curve" : "out of memory";
+}
+
 static int fit_push(fit_curve *c, double z, double F, long line)
 {
+    if (c->n >= FIT_POINTS_MAX) {
+        return 1;
+    }
     if (c->n == c->cap) {
         size_t nc = c->cap ? 2 * c->cap : 1024;
         double *zz = realloc(c->z, nc * sizeof *zz);
@@ -366,11 +399,36 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
     return 0;
 }
 
-static void fit_json_num(const char *key, double v, int f64, int *first)
+/* the input and units objects of a fit's JSON; ends the object */
+static void fit_json_end(cli_json *j, const struct fit_args *A)
 {
-    printf("%s\"%s\": ", *first ? "" : ", ", key);
-    printf(f64 ? "%.17g" : "%.9g", v);
-    *first = 0;
+    cli_json in;
+    json_key(j, "input");
+    json_begin(&in, j->fp, 1);
+    json_str(&in, "command", "fit");
+    json_str(&in, "curve", A->file);
+    if (A->pi < 0) {
+        json_str(&in, "profile", "table");
+        json_str(&in, "file", A->tipfile);
+    } else {
+        int k;
+        json_str(&in, "profile", profiles[A->pi].name);
+        for (k = 0; k < 3 && profiles[A->pi].flags[k] != NULL; k++) {
+            json_num(&in, profiles[A->pi].flags[k] + 2, A->p[k]);
+        }
+    }
+    json_num(&in, "k_m", A->k_m);
+    json_num(&in, "z_e", A->z_e);
+    if (A->have_E0) {
+        json_num(&in, "E0", A->E0);
+        json_num(&in, "w0", A->w0);
+    }
+    json_str(&in, "method", A->method == MDR_FIT_FULL ? "full" : "two-point");
+    json_key(&in, "approach");
+    fputs(A->approach ? "true" : "false", in.fp);
+    json_str(&in, "arith", A->f64 ? "f64" : "f32");
+    fputc('}', j->fp);
+    json_units(j, &in, "m");
 }
 
 static int fit_curve_cmd(const struct fit_args *A)
@@ -378,17 +436,23 @@ static int fit_curve_cmd(const struct fit_args *A)
     fit_reader r = {NULL, NULL, NULL, 0, 0};
     fit_curve c;
     fit_scratch s = {NULL, 0};
-    int rc = 0, header = 0, first = 1;
+    int rc = 0, header = 0;
     long bad;
+    cli_json j;
     memset(&c, 0, sizeof c);
     r.name = A->file;
     r.fp = fopen(A->file, "rb");
     if (r.fp == NULL) {
         return usage_error("cannot open", A->file);
     }
-    while (rc == 0 && fit_getline(&r) >= 0) {
+    for (;;) {
         char *f[3][2];
         double z, F;
+        long got = rc == 0 ? fit_getline(&r) : -1;
+        if (got < 0) {
+            rc = got == -2 ? 2 : rc;
+            break;
+        }
         if (fit_skip(r.buf)) {
             continue;
         }
@@ -400,7 +464,7 @@ static int fit_curve_cmd(const struct fit_args *A)
             header = 1;
             rc = fit_row(&r, f, 0, &z, &F);
             if (rc == 0 && fit_push(&c, z, F, r.line) != 0) {
-                rc = fit_bad_line(&r, "out of memory");
+                rc = fit_bad_line(&r, fit_push_why(&c));
             }
         }
     }
@@ -423,38 +487,48 @@ static int fit_curve_cmd(const struct fit_args *A)
     }
     (void)fit_one(A, c.z, c.F, c.n, &s, &c.res);
     free(s.buf);
-    printf("{");
+    json_begin(&j, stdout, A->f64);
     if (c.res.st != MDR_OK) {
-        printf("\"status\": \"%s\", \"message\": \"%s\", \"status_code\": %d, \"method\": \"%s\", \"arith\": \"%s\"}\n",
-               fit_status_name(c.res.st), mdr_status_str(c.res.st), (int)c.res.st,
-               A->method == MDR_FIT_FULL ? "full" : "two-point", A->f64 ? "f64" : "f32");
+        json_str(&j, "status", fit_status_name(c.res.st));
+        json_str(&j, "message", mdr_status_str(c.res.st));
+        json_key(&j, "status_code");
+        printf("%d", (int)c.res.st);
+        json_str(&j, "method", A->method == MDR_FIT_FULL ? "full" : "two-point");
+        json_str(&j, "arith", A->f64 ? "f64" : "f32");
+        fit_json_end(&j, A);
         fit_curve_free(&c);
         return 1;
     }
-    fit_json_num("E", c.res.E, A->f64, &first);
-    fit_json_num("w", c.res.w, A->f64, &first);
-    fit_json_num("z0", c.res.z0, A->f64, &first);
-    fit_json_num("F_base", c.res.F_base, A->f64, &first);
-    fit_json_num("E_err", c.res.E_err, A->f64, &first);
-    fit_json_num("w_err", c.res.w_err, A->f64, &first);
-    fit_json_num("z0_err", c.res.z0_err, A->f64, &first);
-    fit_json_num("F_base_err", c.res.F_base_err, A->f64, &first);
-    fit_json_num("mu", c.res.mu, A->f64, &first);
-    fit_json_num("R_mu", c.res.R_mu, A->f64, &first);
-    fit_json_num("z_e", A->z_e, A->f64, &first);
-    printf(", \"regime\": \"%s\"", mdr_regime_str(c.res.regime));
-    fit_json_num("rms", c.res.rms, A->f64, &first);
-    fit_json_num("pull_off_F", c.res.pull_off_F, A->f64, &first);
-    fit_json_num("pull_off_z", c.res.pull_off_z, A->f64, &first);
-    fit_json_num("a_pull_off", c.res.a_pull_off, A->f64, &first);
+    json_num(&j, "E", c.res.E);
+    json_num(&j, "w", c.res.w);
+    json_num(&j, "z0", c.res.z0);
+    json_num(&j, "F_base", c.res.F_base);
+    json_num(&j, "E_err", c.res.E_err);
+    json_num(&j, "w_err", c.res.w_err);
+    json_num(&j, "z0_err", c.res.z0_err);
+    json_num(&j, "F_base_err", c.res.F_base_err);
+    json_num(&j, "mu", c.res.mu);
+    json_num(&j, "R_mu", c.res.R_mu);
+    json_num(&j, "z_e", A->z_e);
+    json_str(&j, "regime", mdr_regime_str(c.res.regime));
+    json_num(&j, "rms", c.res.rms);
+    json_num(&j, "pull_off_F", c.res.pull_off_F);
+    json_num(&j, "pull_off_z", c.res.pull_off_z);
+    json_num(&j, "a_pull_off", c.res.a_pull_off);
     if (A->approach) {
-        fit_json_num("w_adv", c.res.w_adv, A->f64, &first);
-        fit_json_num("w_adv_err", c.res.w_adv_err, A->f64, &first);
-        printf(", \"n_approach\": %lu", (unsigned long)c.res.n_approach);
+        json_num(&j, "w_adv", c.res.w_adv);
+        json_num(&j, "w_adv_err", c.res.w_adv_err);
+        json_key(&j, "n_approach");
+        printf("%lu", (unsigned long)c.res.n_approach);
     }
-    printf(", \"n\": %lu, \"method\": \"%s\", \"iterations\": %u, \"arith\": \"%s\", \"status\": \"ok\"}\n",
-           (unsigned long)c.res.n, c.res.method == MDR_FIT_FULL ? "full" : "two-point",
-           (unsigned)c.res.iterations, A->f64 ? "f64" : "f32");
+    json_key(&j, "n");
+    printf("%lu", (unsigned long)c.res.n);
+    json_str(&j, "method", c.res.method == MDR_FIT_FULL ? "full" : "two-point");
+    json_key(&j, "iterations");
+    printf("%u", (unsigned)c.res.iterations);
+    json_str(&j, "arith", A->f64 ? "f64" : "f32");
+    json_str(&j, "status", "ok");
+    fit_json_end(&j, A);
     rc = A->model != NULL ? fit_write_model(A, &c) : 0;
     fit_curve_free(&c);
     return rc;
@@ -638,7 +712,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         pd->label = NULL;
         pd->have = 0;
         if (fit_push(&ch[0], pd->z, pd->F, pd->line) != 0) {
-            (void)fit_bad_line(r, "out of memory");
+            (void)fit_bad_line(r, fit_push_why(&ch[0]));
             return -2;
         }
         active = 1;
@@ -647,7 +721,11 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         char *f[3][2], *label;
         double z, F;
         int sn;
-        if (fit_getline(r) < 0) {
+        long got = fit_getline(r);
+        if (got == -2) {
+            return -2;
+        }
+        if (got < 0) {
             return (long)(k + (size_t)active);
         }
         if (fit_skip(r->buf)) {
@@ -667,7 +745,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         }
         if (active && fit_same_label(ch[k].label, f[0][0], f[0][1])) {
             if (fit_push(&ch[k], z, F, r->line) != 0) {
-                (void)fit_bad_line(r, "out of memory");
+                (void)fit_bad_line(r, fit_push_why(&ch[k]));
                 return -2;
             }
             continue;
@@ -702,7 +780,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         ch[k].label = label;
         active = 1;
         if (fit_push(&ch[k], z, F, r->line) != 0) {
-            (void)fit_bad_line(r, "out of memory");
+            (void)fit_bad_line(r, fit_push_why(&ch[k]));
             return -2;
         }
     }
@@ -854,16 +932,11 @@ static int fit_checked(const struct fit_args *Ap, int have_k, int have_E0, int h
 static int fit_tip_samples(struct fit_args *A)
 {
     double *r = NULL, *fv = NULL, *sl = NULL;
-    long n = read_table(A->tipfile, &r, &fv);
+    long *lines = NULL;
+    long n = load_tip(A->tipfile, &r, &fv, &sl, &lines);
     int rc = 0;
     if (n < 0) {
-        return usage_error("cannot read r,f pairs from", A->tipfile);
-    }
-    if (n > 65535) {
-        rc = usage_error("more than 65535 points in", A->tipfile);
-    } else if ((sl = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof *sl)) == NULL ||
-               tip_slopes(r, fv, n, sl) != 0) {
-        rc = usage_error("r must increase strictly in", A->tipfile);
+        rc = 2; /* load_tip named the file and line */
     } else {
         mdr_contact_f64 c64;
         mdr_contact_f32 c32;
@@ -886,12 +959,37 @@ static int fit_tip_samples(struct fit_args *A)
     free(r);
     free(fv);
     free(sl);
+    free(lines);
     A->kind = MDR_PROFILE_TABLE;
+    A->pi = -1;
     return rc;
+}
+
+/* the flags of mdr fit (numbers: its own and every profile parameter) */
+static int fit_flag(const char *f)
+{
+    static const char *const own[] = {"--k-machine", "--z-e", "--E0", "--w0", "--jobs"};
+    int k, i;
+    for (k = 0; k < (int)(sizeof own / sizeof own[0]); k++) {
+        if (strcmp(f, own[k]) == 0) {
+            return 1;
+        }
+    }
+    for (k = 0; k < (int)(sizeof profiles / sizeof profiles[0]); k++) {
+        for (i = 0; i < 3 && profiles[k].flags[i] != NULL; i++) {
+            if (strcmp(f, profiles[k].flags[i]) == 0) {
+                return 1;
+            }
+        }
+    }
+    return 0;
 }
 
 static int fit_main(int argc, char **argv)
 {
+    static const char *const fit_bools[] = {"--approach", NULL};
+    struct cli_kv kv[CLI_MAX_FLAGS];
+    int nkv;
     struct fit_args A;
     const char *profile = NULL, *pname[3];
     double pval[3];
@@ -903,21 +1001,20 @@ static int fit_main(int argc, char **argv)
     A.z_e = MDR_FIT_Z_E_DEFAULT;
     ncpu = sysconf(_SC_NPROCESSORS_ONLN);
     A.jobs = ncpu > 0 && ncpu < 1024 ? (int)ncpu : 1;
-    for (i = 2; i < argc; i++) {
-        const char *f = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+    i = cli_collect(argc, argv, 2, fit_bools, kv, &nkv);
+    if (i == 3) {
+        fputs(usage_cmd[CMD_FIT], stdout);
+        return 0;
+    }
+    if (i != 0) {
+        return i;
+    }
+    for (i = 0; i < nkv; i++) {
+        const char *f = kv[i].name, *v = kv[i].val;
         double x = 0.0;
         if (strcmp(f, "--approach") == 0) {
             A.approach = 1;
-            continue;
-        }
-        if (strncmp(f, "--", 2) != 0) {
-            return usage_error("expected a flag", f);
-        }
-        if (v == NULL) {
-            return usage_error("flag needs a value", f);
-        }
-        i++;
-        if (strcmp(f, "--curve") == 0 || strcmp(f, "--map") == 0) {
+        } else if (strcmp(f, "--curve") == 0 || strcmp(f, "--map") == 0) {
             if (A.file != NULL) {
                 return usage_error("give one of --curve FILE or --map FILE", NULL);
             }
@@ -942,8 +1039,14 @@ static int fit_main(int argc, char **argv)
             } else {
                 return usage_error("--method takes full or two-point", v);
             }
+        } else if (!fit_flag(f)) {
+            int of_profile;
+            if (flag_known(f, CMD_EQ, &of_profile) == 0) {
+                return usage_error("unknown flag", f);
+            }
+            return usage_errf("%s: not a flag of mdr fit (mdr fit --help)", f);
         } else if (!parse_num(v, &x)) {
-            return usage_error("not a number", f);
+            return usage_errf("%s: not a finite number: %s", f, v);
         } else if (strcmp(f, "--k-machine") == 0) {
             A.k_m = x;
             have_k = 1;
@@ -968,6 +1071,13 @@ static int fit_main(int argc, char **argv)
             return usage_error("unknown or misplaced flag", f);
         }
     }
+    if (!A.f64) {
+        for (k = 0; k < np; k++) {
+            if (outside_f32(pval[k])) {
+                return usage_errf("%s %.9g: outside the range of --arith f32", pname[k], pval[k]);
+            }
+        }
+    }
     if (A.file == NULL) {
         return usage_error("fit needs --curve FILE or --map FILE", NULL);
     }
@@ -979,10 +1089,13 @@ static int fit_main(int argc, char **argv)
     }
     if (strcmp(profile, "table") == 0) {
         int rc;
-        if (A.tipfile == NULL || np > 0) {
-            return usage_error(np > 0 ? "unknown or misplaced flag" : "--profile table needs --file tip.csv",
-                               np > 0 ? pname[0] : NULL);
+        if (A.tipfile == NULL) {
+            return usage_error("--profile table needs --file tip.csv", NULL);
         }
+        if (np > 0) {
+            return usage_errf("%s: not a parameter of --profile table", pname[0]);
+        }
+        A.have_E0 = have_E0;
         rc = fit_tip_samples(&A);
         if (rc == 0) {
             rc = fit_checked(&A, have_k, have_E0, have_w0);
@@ -1006,6 +1119,8 @@ static int fit_main(int argc, char **argv)
         return usage_error("the flat punch cannot be fitted (pinned at its rim until it ruptures)", NULL);
     }
     A.kind = profiles[pi].kind;
+    A.pi = pi;
+    A.have_E0 = have_E0;
     {
         const char *missing = profile_params(pi, pname, pval, np, used, A.p);
         if (missing != NULL) {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mdr_fit_cli_t.h: one arithmetic of `mdr fit` (examples/mdr_fit_cli.h
  * includes it twice, with FIT_T float/double and FIT_SFX(name) name##_f32 /

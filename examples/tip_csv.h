@@ -1,16 +1,18 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * tip_csv.h: the tabulated-profile (measured tip) reader of the mdr CLI, as a
  * parser of a text held in memory, so that the CLI and the fuzz target
  * (host_tests/fuzz/fuzz_table.c) run the same code.
  *
- * Format: one "r,f" pair per line, radius r and gap f(r) in metres (any
- * strtod number, spaces around the comma allowed); empty lines and lines
- * starting with '#' are skipped; the first data line may instead be a
- * header (a line that does not parse and contains 'r', e.g. "r,f"). A line
- * is at most TIP_CSV_LINE_MAX - 1 characters; a NUL byte, a longer line, or
- * any other line that does not parse makes the whole text malformed. Values
- * are not checked here: mdr_table_init_gap_*() validates them (r[0] = 0,
- * strictly increasing, finite).
+ * Format: one pair "r f" per line, radius r and gap f(r) in metres (any
+ * strtod number), separated by a comma (spaces around it allowed), by tabs
+ * or by spaces; empty lines and lines starting with '#' are skipped; the
+ * first data line may instead be a header (a line that does not parse and
+ * contains 'r', e.g. "r,f"). A line is at most TIP_CSV_LINE_MAX - 1
+ * characters; a NUL byte, a longer line, or any other line that does not
+ * parse makes the whole text malformed (tip_csv_parse_at() names its line).
+ * Values are not checked here: mdr_table_init_gap_*() validates them (r[0]
+ * = 0, strictly increasing, finite).
  */
 #ifndef TIP_CSV_H
 #define TIP_CSV_H
@@ -32,8 +34,9 @@ static inline size_t tip_csv_lines(const char *text, size_t len)
     return n;
 }
 
-/* One "r , f" line (NUL-terminated) into *r, *f: 1, or 0 if it does not
- * parse. strtod, not sscanf: out-of-range numbers are defined (+-inf, 0). */
+/* One "r , f", "r<TAB>f" or "r f" line (NUL-terminated) into *r, *f: 1,
+ * or 0 if it does not parse. strtod, not sscanf: out-of-range numbers are
+ * defined (+-inf, 0). */
 static inline int tip_csv_pair(const char *line, double *r, double *f)
 {
     char *end;
@@ -44,10 +47,13 @@ static inline int tip_csv_pair(const char *line, double *r, double *f)
     }
     for (p = end; isspace((unsigned char)*p); p++) {
     }
-    if (*p != ',') {
-        return 0;
+    if (*p == ',') {
+        p++;
+    } else if (p == end) {
+        return 0; /* neither a comma nor white space after r */
     }
-    p++;
+    for (; isspace((unsigned char)*p); p++) {
+    }
     *f = strtod(p, &end);
     if (end == p) {
         return 0;
@@ -58,18 +64,30 @@ static inline int tip_csv_pair(const char *line, double *r, double *f)
 }
 
 /* Parse len bytes of text (no NUL terminator needed) into r[], f[] of
- * capacity cap. Returns the number of pairs, -1 when the text is malformed,
- * -2 when it holds more than cap pairs. */
-static inline long tip_csv_parse(const char *text, size_t len, double *r, double *f, size_t cap)
+ * capacity cap, and the 1-based text line of each pair into lines[] (if not
+ * NULL). Returns the number of pairs, -1 when a line is malformed (or holds
+ * a NUL byte), -2 when the text holds more than cap pairs, -3 when a line is
+ * longer than TIP_CSV_LINE_MAX - 1 characters; *bad (if not NULL) is then
+ * the line. */
+static inline long tip_csv_parse_at(const char *text, size_t len, double *r, double *f, size_t cap,
+                                    long *lines, long *bad)
 {
     size_t pos = 0, n = 0;
+    long lineno = 0, dummy;
     int header_ok = 1;
+    if (bad == NULL) {
+        bad = &dummy;
+    }
     while (pos < len) {
         char line[TIP_CSV_LINE_MAX];
         const char *nl = memchr(text + pos, '\n', len - pos);
         size_t l = (nl != NULL ? (size_t)(nl - text) : len) - pos;
         double a, b;
-        if (l >= sizeof line || memchr(text + pos, '\0', l) != NULL) {
+        *bad = ++lineno;
+        if (l >= sizeof line) {
+            return -3;
+        }
+        if (memchr(text + pos, '\0', l) != NULL) {
             return -1;
         }
         memcpy(line, text + pos, l);
@@ -94,9 +112,19 @@ static inline long tip_csv_parse(const char *text, size_t len, double *r, double
         }
         r[n] = a;
         f[n] = b;
+        if (lines != NULL) {
+            lines[n] = lineno;
+        }
         n++;
     }
     return (long)n;
+}
+
+/* tip_csv_parse_at() without the line numbers; -3 reported as -1 */
+static inline long tip_csv_parse(const char *text, size_t len, double *r, double *f, size_t cap)
+{
+    long n = tip_csv_parse_at(text, len, r, f, cap, NULL, NULL);
+    return n == -3 ? -1 : n;
 }
 
 /* The interval slopes s[j] = (f[j+1] - f[j])/(r[j+1] - r[j]), j = 0..n-2,

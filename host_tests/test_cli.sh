@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # test_cli.sh: the mdr CLI's interface contract (subcommands, flags, JSON keys,
 # CSV columns, exit status 2 with a one-line message on bad arguments).
 # Usage: bash host_tests/test_cli.sh build/host/mdr
@@ -182,16 +183,6 @@ grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad 
 # outside the table: exit 1 with a message
 $MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>&1
 [ $? -eq 1 ] && ok || bad "cycle beyond the table exits 1"
-# a NaN or infinite path value is refused in every arithmetic (q31: not converted)
-for arith in f32 f64 q31; do
-    for v in nan inf; do
-        err=$($MDR cycle $P --control grips --path 0,1e-7,$v --steps-per-segment 4 --a-max 2e-6 \
-            --arith $arith 2>&1 >/dev/null)
-        [ $? -eq 1 ] && printf '%s' "$err" | grep -q 'step 5 (value .*): input is NaN or infinite' && ok ||
-            bad "cycle --path with $v ($arith) exits 1 at step 5: $err"
-    done
-done
-
 # bad arguments: exit 2, one line on stderr
 expect2() {
     local err
@@ -200,7 +191,6 @@ expect2() {
     [ $rc -eq 2 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && [ -n "$err" ] && ok ||
         bad "expected exit 2 and one line for: $* (rc $rc, '$err')"
 }
-expect2
 expect2 frobnicate $P
 expect2 eq $P
 expect2 eq --profile paraboloid --E 1e6 --w 0.05 --a 1
@@ -261,6 +251,230 @@ expect2 critical --profile table --file "$TMP/bad.csv" --E 1e6 --w 0.05 --contro
 # a table that ends on the unstable branch: the pull-off lies beyond it
 awk 'BEGIN { print "r,f"; for (i = 0; i <= 20; i++) { r = 1e-6 * i / 20; printf "%.17g,%.17g\n", r, r * r / 20e-6 } }' >"$TMP/short.csv"
 expect2 critical --profile table --file "$TMP/short.csv" --E 1e6 --w 0.05 --control load
+
+# ---- the CLI contract of issue 19 ------------------------------------------
+# refuse PATTERN ARGS...: exit 2, nothing on stdout, one line on stderr that
+# matches the (grep -E) PATTERN
+refuse() {
+    local pat=$1 out err rc
+    shift
+    out=$(timeout 60 "$MDR" "$@" 2>"$TMP/err") # a read that never ends fails, not hangs
+    rc=$?
+    err=$(cat "$TMP/err")
+    [ $rc -eq 2 ] && [ -z "$out" ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] &&
+        printf '%s' "$err" | grep -Eq -- "$pat" && ok ||
+        bad "refuse /$pat/: $* (rc $rc, stdout ${#out} chars, stderr '$err')"
+}
+# jcheck JSON PYTHON-EXPR: the expression over j (the object) is true
+jcheck() {
+    printf '%s' "$1" | /usr/bin/python3 -c '
+import json, sys
+j = json.loads(sys.stdin.read())
+sys.exit(0 if eval(sys.argv[1]) else 1)' "$2" 2>/dev/null && ok || bad "json: $2 in $1"
+}
+# every quantity of the object (a number that is not a count) and of its
+# input has a unit
+COUNTS='{"events", "cycles", "jumps", "springs", "steps_per_segment", "n", "points", "status_code", "iterations", "n_approach"}'
+has_units() {
+    jcheck "$1" "all(k in j['units'] for o in (j, j['input']) for k, v in o.items() if isinstance(v, float) or (isinstance(v, int) and not isinstance(v, bool) and k not in $COUNTS))"
+}
+
+# help and version: stdout, exit 0; bare mdr: the usage on stderr, exit 2
+for args in "--help" "help" "-h" "eq --help" "critical --help" "curve -h" "stress --help" "cycle --help" \
+    "table --help" "fit --help" "help cycle" "help fit" "eq $P --a 1e-6 --help"; do
+    out=$($MDR $args 2>"$TMP/err")
+    [ $? -eq 0 ] && [ "${out#usage: mdr}" != "$out" ] && [ ! -s "$TMP/err" ] && ok || bad "mdr $args: usage on stdout, exit 0"
+done
+[ "$($MDR cycle --help | head -1)" != "$($MDR eq --help | head -1)" ] && ok || bad "each command has its own help"
+out=$($MDR --version 2>"$TMP/err")
+[ $? -eq 0 ] && printf '%s' "$out" | grep -Eq '^mdr \(libmdr [0-9]+\.[0-9]+\)$' && [ ! -s "$TMP/err" ] && ok || bad "mdr --version: $out"
+out=$($MDR 2>"$TMP/err")
+[ $? -eq 2 ] && [ -z "$out" ] && head -1 "$TMP/err" | grep -q '^usage: mdr' && ok || bad "bare mdr: usage on stderr, exit 2"
+refuse 'help: unknown command: teapot' help teapot
+refuse 'unknown command: frobnicate' frobnicate $P
+
+# --flag=value everywhere --flag value is
+[ "$($MDR eq --profile=paraboloid --R=10e-6 --E=1e6 --w=0.05 --a=2.6e-6 --arith=f64)" = \
+  "$($MDR eq $P --a 2.6e-6 --arith f64)" ] && ok || bad "eq with --flag=value"
+[ "$($MDR cycle $P --control=grips --path=0,0.5e-6,-0.6e-6 --steps-per-segment=50 --springs=64 --arith=q31 2>&1)" = \
+  "$($MDR cycle $P --control grips --path 0,0.5e-6,-0.6e-6 --steps-per-segment 50 --springs 64 --arith q31 2>&1)" ] &&
+    ok || bad "cycle with --flag=value"
+refuse 'not a finite number' eq $P --a=
+refuse 'flag needs a value: --a$' eq $P --a
+refuse 'expected a flag' eq $P 2.6e-6
+
+# duplicate, unknown and misplaced flags: refused by name
+refuse 'given twice: --arith' cycle $P --control grips --path 0,1e-7 --steps-per-segment 4 --arith q31 --arith f32
+refuse 'given twice: --a$' eq $P --a 1e-6 --a=2e-6
+refuse 'given twice: --R' eq $P --a 1e-6 --R 1e-6
+refuse 'unknown flag: --bogus' eq $P --a 1e-6 --bogus 3
+refuse 'unknown flag: --bogus' eq $P --a 1e-6 --bogus=3
+refuse '^mdr: --control: not a flag of mdr eq' eq $P --a 1e-6 --control load
+refuse '^mdr: --path: not a flag of mdr critical' critical $P --control load --path 0,1
+refuse '^mdr: --w-adv: not a flag of mdr eq' eq $P --a 1e-6 --w-adv 0.01
+refuse '^mdr: --springs: not a flag of mdr eq' eq $P --a 1e-6 --springs 64
+refuse '^mdr: --summary: not a flag of mdr eq' eq $P --a 1e-6 --summary "$TMP/s.json"
+refuse '^mdr: --name: not a flag of mdr cycle' cycle $P --control grips --path 0,1e-7 --steps-per-segment 4 --name x
+refuse '^mdr: --E: not a flag of mdr table' table --profile sphere --R 1e-6 --a-max 5e-7 --E 1e6
+refuse '^mdr: --n: not a parameter of --profile paraboloid' eq $P --a 1e-6 --n 3
+refuse '^mdr: --R: not a parameter of --profile cone' eq --profile cone --theta 0.5 --R 1 --E 1e6 --w 0.05 --a 1e-6
+refuse '^mdr: --k-machine goes with --control machine' critical $P --control load --k-machine 1
+refuse '^mdr: --file goes with --profile table' eq $P --a 1e-6 --file "$TMP/tip.csv"
+refuse '^mdr: --a-start goes with --control' stress $P --a 1e-6 --r 0 --a-start 1e-6
+refuse '^mdr: flag takes no value: --approach$' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --approach=1
+refuse '^mdr: unknown flag: --bogus' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --bogus 1
+refuse '^mdr: --control: not a flag of mdr fit' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --control load
+refuse 'given twice: --k-machine' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 --k-machine 1 --k-machine=2
+# the power law's exponent is --n: curve's count is then --points
+csv=$($MDR curve --profile powerlaw --C 5e4 --n 2 --E 1e6 --w 0.05 --a-max 1e-5 --points 20 --arith f64) &&
+    [ "$(printf '%s\n' "$csv" | wc -l)" -eq 21 ] && ok || bad "curve powerlaw --points"
+# C r^2 with C = 1/(2R) is the paraboloid: the same curve
+near "$(printf '%s\n' "$csv" | tail -1 | cut -d, -f3)" "$($MDR curve $P --a-max 1e-5 --n 20 --arith f64 | tail -1 | cut -d, -f3)" 1e-12 && ok ||
+    bad "powerlaw n = 2, C = 1/(2R) = paraboloid R"
+refuse 'count once' curve $P --a-max 1e-5 --n 20 --points 20
+
+# every number checked before it is used, in every arithmetic
+for arith in f32 f64; do
+    for v in nan inf -inf 1e999 0x1p99999; do
+        refuse "^mdr: --a: not a finite number: $v" eq $P --a $v --arith $arith
+        refuse "^mdr: --E: not a finite number: $v" critical --profile paraboloid --R 10e-6 --E $v --w 0.05 --control load --arith $arith
+    done
+done
+for arith in f32 f64 q31; do
+    # f32: a value float cannot hold is refused first (below)
+    [ $arith = f32 ] && interp=1e30 || interp=1e308
+    for v in nan inf -inf; do
+        refuse "^mdr: --path: value 3 is not a finite number" cycle $P --control grips --path 0,1e-7,$v \
+            --steps-per-segment 4 --a-max 2e-6 --arith $arith
+    done
+    # the interpolation a + (b - a) j/S overflows: refused by its segment, before step 0
+    if [ $arith != f32 ]; then
+        refuse '^mdr: --path segment 1 \(0 to -1e\+308\): the interpolation overflows' cycle $P --control grips \
+            --path 0,-1e308 --steps-per-segment 4 --arith $arith
+        refuse '^mdr: --path segment 2 .*the interpolation overflows' cycle $P --control load \
+            --path 0,1e-7,1.7e308 --steps-per-segment 2 --arith $arith
+    else
+        refuse '^mdr: --path value 2 \(-1e\+308\): outside the range of --arith f32' cycle $P --control grips \
+            --path 0,-1e308 --steps-per-segment 4 --arith $arith
+    fi
+done
+refuse '^mdr: --path segment 1 .*overflows' cycle $P --control grips --path -1e303,1e303 --steps-per-segment 1e6 --arith f64
+# in f32 a value float cannot hold is refused where it is given, not at step 0
+refuse '^mdr: --k-machine 1e-308: outside the range of --arith f32' critical $P --control machine --k-machine 1e-308
+refuse '^mdr: --k-machine .*outside the range of --arith f32' cycle $P --control machine --k-machine 1e-308 --path 0,1e-7 --steps-per-segment 4
+refuse '^mdr: --E 1e\+39: outside the range of --arith f32' eq --profile paraboloid --R 10e-6 --E 1e39 --w 0.05 --a 1e-6
+refuse '^mdr: --path value 2 .*outside the range of --arith f32' cycle $P --control load --path 0,1e39 --steps-per-segment 4
+refuse '^mdr: --R 1e-40: outside the range of --arith f32' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-40 --k-machine 1 --arith f32
+out=$($MDR critical $P --control machine --k-machine 1e-308 --arith f64 2>&1)
+[ $? -ne 2 ] || printf '%s' "$out" | grep -vq 'outside the range' && ok || bad "1e-308 is a double: not refused for range in f64: $out"
+# q31: a path value beyond the input range (+-2 units) is refused, by value and range
+refuse '^mdr: --path value 2 \(0.001 m\): outside the q31 input range \+-2 D0 = \+-[0-9.e-]+ m' cycle $P \
+    --control grips --path 0,1e-3 --a-max 2e-6 --steps-per-segment 4 --arith q31
+refuse '^mdr: --path value 3 \(-1 N\): outside the q31 input range \+-2 F0' cycle $P \
+    --control load --path 0,1e-7,-1 --a-max 2e-6 --steps-per-segment 4 --arith q31
+# within the range: a vertex at -1.9 D0 (2 D0 from the message above; the
+# body apart, no contact) runs, at -2.1 D0 it is refused
+D2=$($MDR cycle $P --control grips --path 0,1e-3 --a-max 2e-6 --steps-per-segment 4 --arith q31 2>&1 | sed -n 's/.*= +-\([0-9.e+-]*\) m$/\1/p')
+$MDR cycle $P --control grips --path 0,$(awk -v d="$D2" 'BEGIN { printf "%.9g", -0.95 * d }') --a-max 2e-6 \
+    --steps-per-segment 4 --arith q31 >/dev/null 2>&1 && ok || bad "q31 path within +-2 D0 (2 D0 = $D2) runs"
+refuse 'outside the q31 input range' cycle $P --control grips --path 0,$(awk -v d="$D2" 'BEGIN { printf "%.9g", -1.05 * d }') \
+    --a-max 2e-6 --steps-per-segment 4 --arith q31
+
+# tip files: bounded reads, errors with file:line, comma/tab/space separated
+start=$(date +%s)
+refuse '^mdr: /dev/zero:1: a NUL byte' eq --profile table --file /dev/zero --E 1e6 --w 0.05 --a 1e-6
+[ $(($(date +%s) - start)) -le 2 ] && ok || bad "/dev/zero refused quickly"
+yes '1e-6,1e-9' | head -c 17000000 >"$TMP/big.csv"
+refuse 'big.csv: larger than 16776960 bytes' table --profile table --file "$TMP/big.csv" --springs 16
+awk 'BEGIN { print "r,f"; for (i = 0; i <= 65535; i++) printf "%d,0\n", i }' >"$TMP/many.csv"
+refuse 'many.csv:65537: more than 65535 points' table --profile table --file "$TMP/many.csv" --springs 16
+refuse '/nonexistent.csv' table --profile table --file /nonexistent.csv --springs 16
+printf 'r,f\n0,0\n1e-6,x\n' >"$TMP/bad.csv"
+refuse 'bad.csv:3: expected two numbers r f' table --profile table --file "$TMP/bad.csv" --springs 16
+printf '# a tip\n\nr\tf\n0\t0\n1e-6\t1e-9\n1e-6\t2e-9\n' >"$TMP/bad.csv"
+refuse 'bad.csv:6: r must increase strictly' table --profile table --file "$TMP/bad.csv" --springs 16
+{ printf '0,0\n'; printf '%0300d\n' 1; } >"$TMP/bad.csv"
+refuse 'bad.csv:2: line longer than 255 characters' table --profile table --file "$TMP/bad.csv" --springs 16
+printf 'r,f\n0,0\n1e-6,1e-9\0\n2e-6,4e-9\n' >"$TMP/bad.csv"
+refuse 'bad.csv:3: a NUL byte' table --profile table --file "$TMP/bad.csv" --springs 16
+printf 'r,f\n0,0\n1e-6,1e-9\n2e-6,4e-9,7\n' >"$TMP/bad.csv"
+refuse 'bad.csv:4: expected two numbers' table --profile table --file "$TMP/bad.csv" --springs 16
+printf 'r,f\n0,0\n1e-6,1e-9\n2e-6,inf\n' >"$TMP/bad.csv"
+refuse 'bad.csv:4: not a finite number' table --profile table --file "$TMP/bad.csv" --springs 16
+# the same sampled paraboloid with tabs and with spaces gives the comma file's table
+tr ',' '\t' <"$TMP/tip.csv" >"$TMP/tab.csv"
+tr ',' ' ' <"$TMP/tip.csv" | sed 's/ /   /' >"$TMP/space.csv"
+want=$($MDR table --profile table --file "$TMP/tip.csv" --springs 32 --arith f64)
+for f in tab space; do
+    [ "$($MDR table --profile table --file "$TMP/$f.csv" --springs 32 --arith f64)" = "$want" ] && ok ||
+        bad "a $f-separated tip file reads as the comma one"
+done
+
+# --summary FILE: the JSON in the file, stderr empty, the CSV unchanged
+CY="cycle $P --control grips --path 0,0.5e-6,-0.6e-6 --steps-per-segment 200 --springs 256"
+for arith in f32 f64 q31; do
+    $MDR $CY --arith $arith >"$TMP/a.csv" 2>"$TMP/a.json" || bad "cycle exit ($arith)"
+    $MDR $CY --arith $arith --summary "$TMP/s.json" >"$TMP/b.csv" 2>"$TMP/b.err" || bad "cycle --summary exit ($arith)"
+    cmp -s "$TMP/a.csv" "$TMP/b.csv" && [ ! -s "$TMP/b.err" ] && ok || bad "cycle --summary: same CSV, nothing on stderr ($arith)"
+    j=$(cat "$TMP/s.json")
+    [ "$(key "$j" pull_off_F)" = "$(key "$(cat "$TMP/a.json")" pull_off_F)" ] && [ -n "$(key "$j" pull_off_F)" ] && ok ||
+        bad "cycle --summary: the summary ($arith): $j"
+done
+# a run that fails: the error alone on stderr, the summary (up to the failure) in the file
+$MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 --summary "$TMP/s.json" \
+    >/dev/null 2>"$TMP/err"
+[ $? -eq 1 ] && [ "$(wc -l <"$TMP/err")" -eq 1 ] && grep -q '^mdr: step [0-9]* (value .*): .*raise --a-max' "$TMP/err" &&
+    [ "$(key "$(cat "$TMP/s.json")" events)" = 1 ] && ok || bad "cycle --summary on a failure: $(cat "$TMP/err")"
+refuse 'cannot write --summary: /nonexistent/s.json' $CY --summary /nonexistent/s.json
+
+# units and inputs in every JSON object; G_rel (the energy release rate)
+for arith in f32 f64; do
+    j=$($MDR eq $P --a 2.6e-6 --arith $arith)
+    has_units "$j"
+    jcheck "$j" "j['units']['F'] == 'N' and j['units']['d'] == 'm' and j['units']['K_I'] == 'Pa m^0.5' and j['units']['G_rel'] == 'J/m^2'"
+    jcheck "$j" "j['input'] == {'command': 'eq', 'profile': 'paraboloid', 'R': 1e-5, 'E': 1e6, 'w': 0.05, 'arith': '$arith', 'a': 2.6e-6}"
+    jcheck "$j" "j['G'] == j['G_rel'] and abs(j['G_rel'] - 0.05) <= 1e-6 * 0.05"
+    j=$($MDR eq $P --a 2.6e-6 --d 0.1e-6 --arith $arith)
+    has_units "$j"
+    jcheck "$j" "j['input']['d'] == 1e-7 and j['G'] == j['G_rel']"
+    j=$($MDR critical $P --control machine --k-machine 1 --arith $arith)
+    has_units "$j"
+    jcheck "$j" "j['input']['control'] == 'machine' and j['input']['k_m'] == 1 and j['units']['k_m'] == 'N/m'"
+    j=$($MDR critical --profile wavy --R 1e-5 --h 1e-8 --lambda 5e-7 --E 1e6 --w 0.05 --control load --arith $arith)
+    has_units "$j"
+    jcheck "$j" "j['input']['profile'] == 'wavy' and j['input']['lambda'] == 5e-7 and j['input']['h'] == 1e-8 and 'k_m' not in j['input']"
+    j=$($MDR stress $P --control load --r 0.5 --arith $arith)
+    has_units "$j"
+    jcheck "$j" "j['input']['r_over_a_c'] == 0.5 and j['units']['sigma'] == 'Pa'"
+    j=$($MDR stress $P --a 2e-6 --r 1e-6 --arith $arith)
+    has_units "$j"
+    j=$($MDR eq --profile table --file "$TMP/tip.csv" --E 1e6 --w 0.05 --a 2.6e-6 --arith $arith)
+    has_units "$j"
+    jcheck "$j" "j['input']['profile'] == 'table' and j['input']['file'].endswith('tip.csv') and j['input']['points'] == 61"
+done
+for arith in f32 f64 q31; do
+    j=$($MDR cycle $P --control load --path 0,3e-6,-3e-6 --steps-per-segment 100 --springs 128 --arith $arith 2>&1 >/dev/null)
+    has_units "$j"
+    jcheck "$j" "j['input']['w_adv'] == 0 and j['input']['k_m'] == 0 and j['input']['springs'] == 128 and j['input']['control'] == 'load' and j['input']['path'] == [0, 3e-6, -3e-6] and j['units']['path'] == 'N' and j['units']['pull_off_F'] == 'N' and j['units']['F0'] == 'N' and j['input']['arith'] == j['arith'] == '$arith'"
+    j=$($MDR cycle $P --control machine --k-machine 2 --w-adv 0.02 --path 0,3e-6,-3e-6 --steps-per-segment 100 --springs 128 --arith $arith 2>&1 >/dev/null)
+    jcheck "$j" "j['input']['w_adv'] == 0.02 and j['input']['k_m'] == 2 and j['units']['path'] == 'm'"
+done
+
+# mdr table: the header declaring the table, next to --output FILE.c or at --header FILE
+cat >"$TMP/use.c" <<'EOF'
+#include "tipq.h"
+#include "tipf.h"
+int main(void) { return tipf.n == MDR_TABLE_TIPF_SPRINGS && tipq.n == MDR_TABLE_TIPQ_SPRINGS ? 0 : 1; }
+EOF
+$MDR table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --name tipf --output "$TMP/tipf.c" >"$TMP/out" &&
+    [ ! -s "$TMP/out" ] && [ -s "$TMP/tipf.h" ] && grep -q '^#include "tipf.h"' "$TMP/tipf.c" && ok || bad "table --output writes .c and .h"
+$MDR table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --name tipq --arith q31 --header "$TMP/tipq.h" >"$TMP/tipq.c" &&
+    grep -q '^extern const mdr_table_q31 tipq;' "$TMP/tipq.h" && grep -q '^#include "tipq.h"' "$TMP/tipq.c" && ok ||
+    bad "table --header writes the header, the .c on stdout includes it"
+${CC:-cc} -std=c99 -Wall -Wextra -Werror -Ilib/include -I"$TMP" "$TMP/use.c" "$TMP/tipf.c" "$TMP/tipq.c" \
+    "$(dirname "$MDR")/libmdr.a" -lm -o "$TMP/use" && "$TMP/use" && ok || bad "a program using the generated headers links and runs"
+refuse 'output names a .c file' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --output "$TMP/x.txt"
+refuse 'cannot write: /nonexistent/t.h' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --header /nonexistent/t.h
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

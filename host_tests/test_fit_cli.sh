@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # test_fit_cli.sh: the `mdr fit` contract (flags, JSON keys, CSV columns,
 # exit status 0/1/2 with one stderr line naming the file line) and an
 # end-to-end round trip: curves made by the spring engine (`mdr cycle`
@@ -122,7 +123,7 @@ res=$("$MDR" fit --map "$TMP/map2.csv" $TIP --k-machine 0.2)
 expect2() { # expect2 WHAT PATTERN ARGS...
     local what=$1 pat=$2 err
     shift 2
-    err=$("$MDR" "$@" 2>&1 >/dev/null)
+    err=$(timeout 60 "$MDR" "$@" 2>&1 >/dev/null) # a read that never ends fails, not hangs
     if [ $? -eq 2 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && printf '%s' "$err" | grep -q -- "$pat"; then
         ok
     else
@@ -145,8 +146,8 @@ expect2 "R < 0" "profile" fit --curve "$TMP/c.csv" --profile paraboloid --R -1 -
 expect2 "missing file" "cannot open" fit --curve "$TMP/none.csv" $TIP --k-machine 0.2
 expect2 "table without --file" "needs --file" fit --curve "$TMP/c.csv" --profile table --k-machine 0.2
 expect2 "--file without table" "goes with --profile table" fit --curve "$TMP/c.csv" $TIP --file "$TMP/tip.csv" --k-machine 0.2
-expect2 "missing tip file" "cannot read" fit --curve "$TMP/c.csv" --profile table --file "$TMP/none.csv" --k-machine 0.2
-expect2 "table with --R" "misplaced" fit --curve "$TMP/c.csv" --profile table --file "$TMP/tip.csv" --R 2e-8 --k-machine 0.2
+expect2 "missing tip file" "cannot open" fit --curve "$TMP/c.csv" --profile table --file "$TMP/none.csv" --k-machine 0.2
+expect2 "table with --R" "not a parameter of --profile table" fit --curve "$TMP/c.csv" --profile table --file "$TMP/tip.csv" --R 2e-8 --k-machine 0.2
 printf 'z,F\n1e-8,1e-9\n0.9e-8,nan\n' > "$TMP/nan.csv"
 expect2 "NaN row" "nan.csv:3: not a finite" fit --curve "$TMP/nan.csv" $TIP --k-machine 0.2
 printf 'z,F\n1e-8,1e-9\n0.9e-8,abc\n' > "$TMP/txt.csv"
@@ -159,6 +160,33 @@ expect2 "z not monotonic" "order.csv:1301: z increases" fit --curve "$TMP/order.
 expect2 "curve not contiguous" "a1 appears again" fit --map "$TMP/again.csv" $TIP --k-machine 0.2
 printf 'curve,z,F\nx,1e-8\n' > "$TMP/map_two.csv"
 expect2 "map: two fields" "map_two.csv:2: expected three fields" fit --map "$TMP/map_two.csv" $TIP --k-machine 0.2
+
+# every JSON object carries its units and echoes its inputs (issue 19);
+# --flag=value as --flag value
+out=$("$MDR" fit --curve="$TMP/c.csv" --profile=paraboloid --R=20e-9 --k-machine=0.2 --approach) || bad "fit --flag=value exit"
+printf '%s' "$out" | /usr/bin/python3 -c '
+import json, sys
+j = json.loads(sys.stdin.read())
+u, i = j["units"], j["input"]
+assert u["E"] == "Pa" and u["w"] == "J/m^2" and u["z0"] == "m" and u["F_base"] == "N" and u["k_m"] == "N/m" and u["R"] == "m"
+assert all(k in u for o in (j, i) for k, v in o.items() if isinstance(v, float))
+assert i["profile"] == "paraboloid" and i["R"] == 20e-9 and i["k_m"] == 0.2 and i["approach"] is True and i["arith"] == "f64"
+assert i["curve"].endswith("c.csv") and i["method"] == "full"
+' && ok || bad "fit JSON units and input: $out"
+out=$("$MDR" fit --curve "$TMP/nosep.csv" $TIP --k-machine 0.2)
+[ -n "$(key "$out" units)" ] && [ "$(key "$out" input.k_m)" = 0.2 ] && ok || bad "a failed fit's JSON echoes its input: $out"
+expect2 "duplicate flag" "given twice" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --k-machine=0.3
+
+# bounded reads: a NUL byte (/dev/zero at once) or an over-long line is
+# refused with its file:line
+start=$(date +%s)
+expect2 "/dev/zero curve" "/dev/zero:1: a NUL byte" fit --curve /dev/zero $TIP --k-machine 0.2
+expect2 "/dev/zero map" "/dev/zero:1: a NUL byte" fit --map /dev/zero $TIP --k-machine 0.2
+[ $(($(date +%s) - start)) -le 2 ] && ok || bad "/dev/zero refused quickly"
+{ printf 'z,F\n'; head -c 70000 /dev/zero | tr '\0' '1'; echo; } >"$TMP/long.csv"
+expect2 "long line" "long.csv:2: line longer than 65534 characters" fit --curve "$TMP/long.csv" $TIP --k-machine 0.2
+printf 'z,F\n1e-9,2\n3e-9\0,4\n5e-9,1\n' >"$TMP/nul.csv"
+expect2 "NUL byte" "nul.csv:3: a NUL byte" fit --curve "$TMP/nul.csv" $TIP --k-machine 0.2
 
 echo "fit cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -10,17 +10,14 @@
 #                       line of make, CMake, Python, gnuplot, awk, TOML,
 #                       Doxyfile and *.in files
 # Source files: what git tracks or would track (not ignored), but the fuzz
-# corpus (data); mk/spdx-pending.txt lists files another branch owns that
-# get the line when that branch is merged.
+# corpus (data).
 set -eu
 cd "$(dirname "$0")/.."
 mode=${1:-check}
-pending=mk/spdx-pending.txt
 list() {
     git ls-files --cached --others --exclude-standard | sort -u | while read -r f; do
         [ -f "$f" ] || continue
         case $f in host_tests/fuzz/corpus/*) continue ;; esac
-        if [ -f "$pending" ] && grep -qx "$f" "$pending"; then continue; fi
         case $f in
         *.c|*.h|*.inc|*.ld) echo "c $f" ;;
         *.py|*.sh|*.mk|*.gp|*.awk|*.cmake|*.toml|*.in|*/Makefile|Makefile|CMakeLists.txt|*/CMakeLists.txt|Doxyfile|.ci/run|*/run-qemu)
