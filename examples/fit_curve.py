@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Fit an AFM force curve: E*, work of adhesion, contact point and baseline
 (mdr.fit, libmdr's fit kernel, the same code as `mdr fit --curve`), with
 the tip as a closed-form paraboloid and as its sampled (worn) profile,

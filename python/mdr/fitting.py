@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.fit: from a measured force curve to E*, w, the contact point z0 and the
 force baseline, over libmdr's fit kernel (lib/include/mdr_fit.h,
 mdr_fit_t.h; docs/fitting.md), the same C code as `mdr fit --curve`.

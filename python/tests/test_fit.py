@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.fit (libmdr's fit kernel, lib/include/mdr_fit.h): round trips on
 curves made by the spring engine (mdr.Engine under machine control: a
 forward model independent of the fit's, which follows the contact module's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """mdr.Contact("table", r=..., f=...): a sampled tip in the contact module
 (mdr_contact_init_table), against the analytic profiles it samples and
 closed forms worked out here, the engine on it against `mdr cycle
