@@ -37,7 +37,7 @@ install: $(B)/host/libmdr.a $(B)/host/libmdr.so
 	  mk/mdr.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/mdr.pc
 
 install-check:
-	@rm -rf $(B)/install-check
+	@rm -rf $(B)/install-check && mkdir -p $(B)
 	@$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/$(B)/install-check/prefix > $(B)/install-check.log 2>&1 || \
 	  { cat $(B)/install-check.log; exit 1; }
 	@sh mk/install_check.sh $(CURDIR)/$(B)/install-check "$(HOSTCC)"
@@ -46,6 +46,7 @@ cmake-check:
 	@sh mk/cmake_check.sh $(CURDIR)/$(B)/cmake-check
 
 errno-check:
+	@mkdir -p $(B)
 	@set -e; for c in "gcc:host:" "clang:host:" "$(MDR_CM_PREFIX)gcc:cortex-m:$(MDR_CM_FLAGS_m4f)" \
 	  "$(MDR_RV_PREFIX)gcc:riscv:$(MDR_RV_FLAGS_rv32imafc)"; do \
 	  cc=$${c%%:*}; r=$${c#*:}; port=$${r%%:*}; fl=$${r#*:}; \
