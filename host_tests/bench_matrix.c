@@ -262,6 +262,12 @@ static void do_row(bm_scene *b, const char *method_name, int method, int arith, 
     row *r = add_row(b->sc, method_name, arith, n);
     char key[128];
     row_key(r, key, sizeof key);
+    if (method == M_ENGINE && arith == BM_Q31 && b->tq_st != MDR_OK) {
+        /* no q31 table: no time, no callgrind dump, no error; "-" in the tables */
+        r->ns = NAN;
+        fprintf(stderr, "bench_matrix: %s: the q31 table is refused (%s)\n", key, mdr_status_str(b->tq_st));
+        return;
+    }
     r->ns = measure(b, method, arith, evals, key);
     if (!cg_mode && method != M_REF && !isnan(r->ns)) {
         r->err = method == M_CLOSED ? closed_error(b, arith) : cycle_error(b, method, arith);

@@ -50,6 +50,7 @@ typedef struct {
     mdr_table_f32 t32;
     mdr_table_f64 t64;
     mdr_table_q31 tq;
+    mdr_status tq_st; /* MDR_OK, or why the q31 table was refused (its rows fail) */
     uint16_t n;
     /* engines at the start of a cycle of control ctl; inputs for each */
     int ctl;
@@ -102,7 +103,10 @@ SCENE_FN mdr_status bm_scene_init(bm_scene *b, const scene *sc)
     return MDR_OK;
 }
 
-/* The scene's tables with n springs (q31: n a power of two). */
+/* The scene's tables with n springs (q31: n a power of two). A q31 table
+ * the library refuses (e.g. MDR_E_OVERFLOW: the flattened tip's slope after
+ * the rim beyond Q28 at 4096 springs) is no failure of the whole scene: its
+ * status is kept in b->tq_st, the q31 rows report it, the others run. */
 SCENE_FN mdr_status bm_tables(bm_scene *b, uint16_t n)
 {
     mdr_status st;
@@ -123,7 +127,8 @@ SCENE_FN mdr_status bm_tables(bm_scene *b, uint16_t n)
     if (st != MDR_OK || (st = scene_table_f64(b->sc, &b->t64, bm_n64, n)) != MDR_OK) {
         return st;
     }
-    return mdr_table_q31_from_f64(&b->tq, bm_nq, &b->t64);
+    b->tq_st = mdr_table_q31_from_f64(&b->tq, bm_nq, &b->t64);
+    return MDR_OK;
 }
 
 /* Engines at the start of a cycle under control ctl, and its inputs. */
@@ -135,14 +140,15 @@ SCENE_FN mdr_status bm_engines(bm_scene *b, int ctl)
     b->ctl = ctl;
     if ((st = mdr_engine_init_f32(&b->e32, &b->t32, (float)E, (float)w, (float)w, (float)km)) != MDR_OK ||
         (st = mdr_engine_init_f64(&b->e64, &b->t64, E, w, w, km)) != MDR_OK ||
-        (st = mdr_engine_init_q31_f64(&b->eq, &b->tq, E, w, w, km)) != MDR_OK) {
+        (b->tq_st == MDR_OK && (st = mdr_engine_init_q31_f64(&b->eq, &b->tq, E, w, w, km)) != MDR_OK)) {
         return st;
     }
-    b->unit_q = ctl == MDR_CONTROL_GRIPS  ? (double)b->eq.D0
-                : ctl == MDR_CONTROL_LOAD ? 2 * E * ((double)b->tq.L + (double)b->tq.L_lo) * (double)b->eq.D0
-                                          : (double)b->eq.Z0;
+    b->unit_q = b->tq_st != MDR_OK           ? 0
+                : ctl == MDR_CONTROL_GRIPS ? (double)b->eq.D0
+                : ctl == MDR_CONTROL_LOAD  ? 2 * E * ((double)b->tq.L + (double)b->tq.L_lo) * (double)b->eq.D0
+                                           : (double)b->eq.Z0;
     for (i = 1; i <= BM_STEPS; i++) {
-        double u = scene_u(&b->P, ctl, BM_NUP, BM_NDOWN, i), q = u / b->unit_q * 536870912.0;
+        double u = scene_u(&b->P, ctl, BM_NUP, BM_NDOWN, i), q = b->unit_q > 0 ? u / b->unit_q * 536870912.0 : 0;
         bm_in64[i] = u;
         bm_in32[i] = (float)u;
         bm_inq[i] = (int32_t)(q < 0 ? q - 0.5 : q + 0.5);

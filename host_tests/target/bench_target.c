@@ -190,9 +190,10 @@ static int matrix(double ipt)
                 for (a = 0; a < BM_NARITH; a++) {
                     double acc = 0;
                     uint32_t t0 = mdr_port_cycles(), dt;
-                    mdr_status st = a == BM_F32   ? bm_cycle_f32(&b.e32, ctl, &acc)
-                                    : a == BM_F64 ? bm_cycle_f64(&b.e64, ctl, &acc)
-                                                  : bm_cycle_q31(&b.eq, ctl, &acc);
+                    mdr_status st = a == BM_F32            ? bm_cycle_f32(&b.e32, ctl, &acc)
+                                    : a == BM_F64          ? bm_cycle_f64(&b.e64, ctl, &acc)
+                                    : b.tq_st != MDR_OK    ? b.tq_st /* the q31 table was refused */
+                                                           : bm_cycle_q31(&b.eq, ctl, &acc);
                     dt = ticks_since(t0);
                     sink_f32 = (float)acc;
                     if (st == MDR_OK) {
