@@ -94,7 +94,7 @@ def test_engine_round_trip(cli, tmp_path, scene, arith):
     same = (lambda a, b: np.float32(a) == np.float32(b)) if arith == "f32" else (lambda a, b: a == b)
     for key, val in res.as_dict().items():
         assert same(val, js[key]) if isinstance(val, float) else val == js[key], (key, val, js[key])
-    assert set(js) - set(res.as_dict()) == {"status"}
+    assert set(js) - set(res.as_dict()) == {"status", "input", "units"}  # (the CLI echoes its inputs)
     # model(): the CLI's --model column, the approach and retract branches
     Fm, top = res.model()
     cols = np.loadtxt(model, delimiter=",", skiprows=1, usecols=(0, 1, 2))
