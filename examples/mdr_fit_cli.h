@@ -924,7 +924,7 @@ static int fit_map_cmd(const struct fit_args *A)
 
 /* ---- arguments ----------------------------------------------------------- */
 
-static int fit_checked(const struct fit_args *Ap, int have_k, int have_E0, int have_w0);
+static int fit_checked(const struct fit_args *A, int have_k, int have_E0, int have_w0);
 
 /* --profile table --file tip.csv: the samples read (r,f rows), their slopes
  * formed in double and both arithmetics' copies made and checked as the
@@ -1136,29 +1136,28 @@ static int fit_main(int argc, char **argv)
 }
 
 /* The checks after the profile, and the command */
-static int fit_checked(const struct fit_args *Ap, int have_k, int have_E0, int have_w0)
+static int fit_checked(const struct fit_args *A, int have_k, int have_E0, int have_w0)
 {
-    struct fit_args A = *Ap;
-    if (!have_k || !(A.k_m > 0.0) || A.k_m - A.k_m != 0.0) {
+    if (!have_k || !(A->k_m > 0.0) || A->k_m - A->k_m != 0.0) {
         return usage_error("fit needs --k-machine K > 0 (N/m)", NULL);
     }
-    if (!(A.z_e > 0.0) || A.z_e - A.z_e != 0.0) {
+    if (!(A->z_e > 0.0) || A->z_e - A->z_e != 0.0) {
         return usage_error("--z-e must be > 0 (m)", NULL);
     }
-    if (have_E0 != have_w0 || (have_E0 && !(A.E0 > 0.0 && A.w0 > 0.0))) {
+    if (have_E0 != have_w0 || (have_E0 && !(A->E0 > 0.0 && A->w0 > 0.0))) {
         return usage_error("--E0 and --w0 go together, both > 0", NULL);
     }
     {
         mdr_contact_f64 t64;
         mdr_contact_f32 t32;
-        mdr_status st = fit_tip_f64(&A, &t64);
-        if (st == MDR_OK && !A.f64) {
-            st = fit_tip_f32(&A, &t32);
+        mdr_status st = fit_tip_f64(A, &t64);
+        if (st == MDR_OK && !A->f64) {
+            st = fit_tip_f32(A, &t32);
         }
         if (st != MDR_OK) {
             (void)cli_fail("profile", st);
             return 2;
         }
     }
-    return A.map ? fit_map_cmd(&A) : fit_curve_cmd(&A);
+    return A->map ? fit_map_cmd(A) : fit_curve_cmd(A);
 }

@@ -137,8 +137,8 @@ static void measure_empty(void)
 
 /* the spring engine in f32 / q31 and the scene in f32 over n ticks of
  * control ctl; cls from the state before and after each tick */
-#define RUN_SPRING(SFX, IN, STEP)                                                    \
-    static int run_spring_##SFX(mdr_engine_##SFX *e, long n, stats *s)               \
+#define RUN_SPRING(NAME, SFX, IN, STEP)                                              \
+    static int NAME(mdr_engine_##SFX *e, long n, stats *s)                           \
     {                                                                                \
         long i;                                                                      \
         mdr_step_##SFX o;                                                            \
@@ -161,8 +161,10 @@ static void measure_empty(void)
         return 0;                                                                    \
     }
 
-RUN_SPRING(f32, in_f32, mdr_engine_step_d_f32)
-RUN_SPRING(q31, in_q31, mdr_engine_step_d_q31)
+RUN_SPRING(run_spring_f32, f32, in_f32, mdr_engine_step_d_f32)
+RUN_SPRING(run_spring_q31, q31, in_q31, mdr_engine_step_d_q31)
+RUN_SPRING(run_spring_z_f32, f32, in_f32, mdr_engine_step_z_f32)
+RUN_SPRING(run_spring_z_q31, q31, in_q31, mdr_engine_step_z_q31)
 
 static int run_scene_f32(mdr_scene_f32 *e, long n, int machine, stats *s)
 {
@@ -183,44 +185,6 @@ static int run_scene_f32(mdr_scene_f32 *e, long n, int machine, stats *s)
             return 1;
         }
         note(s, c, !was && !e->contact ? SEPARATED : was && e->contact && e->tau == t0 ? PINNED : MOVING);
-    }
-    return 0;
-}
-
-static int run_spring_z_f32(mdr_engine_f32 *e, long n, stats *s)
-{
-    long i;
-    mdr_step_f32 o;
-    mdr_status st;
-    for (i = 1; i <= n; i++) {
-        uint32_t c;
-        int was = e->contact;
-        float a0 = e->a;
-        TICK(mdr_engine_step_z_f32(e, in_f32[i], &o), c);
-        if (st != MDR_OK) {
-            printf("step-cost: tick %ld refused (%d)\n", i, st);
-            return 1;
-        }
-        note(s, c, !was && !e->contact ? SEPARATED : was && e->contact && e->a == a0 && o.event == 0 ? PINNED : MOVING);
-    }
-    return 0;
-}
-
-static int run_spring_z_q31(mdr_engine_q31 *e, long n, stats *s)
-{
-    long i;
-    mdr_step_q31 o;
-    mdr_status st;
-    for (i = 1; i <= n; i++) {
-        uint32_t c;
-        int was = e->contact;
-        int32_t a0 = e->a;
-        TICK(mdr_engine_step_z_q31(e, in_q31[i], &o), c);
-        if (st != MDR_OK) {
-            printf("step-cost: tick %ld refused (%d)\n", i, st);
-            return 1;
-        }
-        note(s, c, !was && !e->contact ? SEPARATED : was && e->contact && e->a == a0 && o.event == 0 ? PINNED : MOVING);
     }
     return 0;
 }
