@@ -648,6 +648,24 @@ static void wavy_phase_of_many_wavelengths(void **st)
         assert_int_equal(mdr_eq_f32(&cf, 1e-12f, &ef), MDR_E_RADIUS);
         assert_int_equal(mdr_eq_f64(&c, 1e-6, &e), MDR_E_RADIUS);
     }
+    /* wavelengths beyond the Veltkamp split's range in f32 (4097 lambda
+     * overflows from lambda = 8.3e34 m; fuzz_init found lambda = 7.3e37 m):
+     * a contact radius far below the wavelength has a small, finite phase,
+     * and g against f64 at the same float inputs, as above (the phase was
+     * NaN, g refused as an overflow) */
+    for (double lam = 1e35; lam < 3e38; lam *= 10) {
+        for (double xd = 1e-3; xd < 2e3; xd *= 1e3) {
+            const float lf = (float)lam, x = (float)xd, R = 1.0f, h = 1e-3f;
+            mdr_contact_f32 cf = mk32(MDR_PROFILE_WAVY, R, h, lf, 1e6, 0.05);
+            mdr_contact_f64 c = mk64(MDR_PROFILE_WAVY, R, h, lf, 1e6, 0.05);
+            double g;
+            float gf;
+            assert_int_equal(mdr_profile_eval_f64(&c, (double)x, &g, NULL, NULL), MDR_OK);
+            assert_int_equal(mdr_profile_eval_f32(&cf, x, &gf, NULL, NULL), MDR_OK);
+            rel_le(gf, g, (double)x * (double)x / (double)R + 9.87 * (double)x * (double)h / (double)lf, 5e-8,
+                   "wavy g, a wavelength beyond the split's range");
+        }
+    }
 }
 
 /* the machine mode interpolates between fixed load (k_m -> 0) and fixed
