@@ -1008,7 +1008,39 @@ static void engine_errors(void **st)
     assert_int_equal(mdr_engine_step_z_f64(&e, 0.1e-6, &o), MDR_E_CONTROL); /* no machine */
     assert_int_equal(mdr_engine_step_d_f64(NULL, 0.1e-6, &o), MDR_E_NULL);
     assert_int_equal(mdr_engine_step_d_f64(&e, 0.1e-6, NULL), MDR_E_NULL);
+    assert_int_equal(mdr_engine_step_z_f64(&e, -0.1e-6, &o), MDR_E_CONTROL);
+    assert_int_equal(mdr_engine_step_z_f64(NULL, 0.1e-6, &o), MDR_E_NULL);
+    assert_int_equal(mdr_engine_step_F_f64(&e, 0.1e-6, NULL), MDR_E_NULL);
     assert_memory_equal(&e, &keep, sizeof e);
+    {
+        /* separated, without a machine: no z is a separated tick, whatever
+         * its sign (the step's fast path must not answer it) */
+        mdr_engine_f64 e2, keep2;
+        mdr_engine_f32 f2;
+        mdr_table_f32 t32;
+        mdr_step_f32 o32;
+        const float p32[3] = {(float)JR, 0, 0};
+        assert_int_equal(mdr_engine_init_f64(&e2, &t64, JE, JW, 0, 0), MDR_OK);
+        assert_int_equal(mdr_engine_outputs_f64(&e2, MDR_OUT_FORCE), MDR_OK);
+        keep2 = e2;
+        assert_int_equal(mdr_engine_step_z_f64(&e2, 0.0, &o), MDR_E_CONTROL);
+        assert_int_equal(mdr_engine_step_z_f64(&e2, -0.1e-6, &o), MDR_E_CONTROL);
+        assert_int_equal(mdr_engine_step_z_f64(&e2, NAN, &o), MDR_E_NONFINITE);
+        assert_memory_equal(&e2, &keep2, sizeof e2);
+        table32(&t32, MDR_PROFILE_PARABOLOID, p32, 64, 2e-6f);
+        assert_int_equal(mdr_engine_init_f32(&f2, &t32, (float)JE, (float)JW, 0, 0), MDR_OK);
+        assert_int_equal(mdr_engine_outputs_f32(&f2, MDR_OUT_FORCE), MDR_OK);
+        assert_int_equal(mdr_engine_step_z_f32(&f2, -0.1e-6f, &o32), MDR_E_CONTROL);
+        assert_int_equal(mdr_engine_step_z_f32(&f2, 0.0f, &o32), MDR_E_CONTROL);
+        assert_int_equal(f2.flags, 0);
+        assert_int_equal(f2.mode, 0);
+        /* with a machine the same z is a separated tick: d = z, F = 0 */
+        assert_int_equal(mdr_engine_init_f32(&f2, &t32, (float)JE, (float)JW, 0, 1.0f), MDR_OK);
+        assert_int_equal(mdr_engine_outputs_f32(&f2, MDR_OUT_FORCE), MDR_OK);
+        assert_int_equal(mdr_engine_step_z_f32(&f2, -0.1e-6f, &o32), MDR_OK);
+        assert_true(o32.d == -0.1e-6f && o32.F == 0.0f && f2.d == -0.1e-6f);
+        assert_int_equal(mdr_engine_step_z_f32(&f2, -INFINITY, &o32), MDR_E_NONFINITE);
+    }
     /* outside the table: named status, sticky flag, state unchanged */
     assert_int_equal(mdr_engine_step_d_f64(&e, 1e-6, &o), MDR_E_OUTSIDE);
     assert_int_equal(e.flags, MDR_FLAG_OUTSIDE);

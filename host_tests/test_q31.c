@@ -394,6 +394,22 @@ static void saturation(void **st)
     assert_int_equal(mdr_engine_step_z_q31(&q, -MDR_Q29_ONE / 128, &o), MDR_OK);
     assert_int_equal(o.d, -MDR_Q29_ONE / 2);
     assert_int_equal(q.flags, 0);
+    /* the last z whose depth z 2^6 fits (-2^25: d = INT32_MIN exactly), and
+     * the first beyond it, with every output (the full tick) and force only
+     * (the step's own separated path) */
+    for (int k = 0; k < 2; k++) {
+        assert_int_equal(mdr_engine_outputs_q31(&q, k ? MDR_OUT_FORCE : MDR_OUT_ALL), MDR_OK);
+        assert_int_equal(mdr_engine_step_z_q31(&q, -(1 << 25), &o), MDR_OK);
+        assert_int_equal(o.d, INT32_MIN);
+        assert_int_equal(q.flags, 0);
+        assert_int_equal(mdr_engine_step_z_q31(&q, -(1 << 25) - 1, &o), MDR_OK);
+        assert_int_equal(o.d, INT32_MIN);
+        assert_int_equal(q.flags, MDR_FLAG_SAT);
+        q.flags = 0;
+        assert_int_equal(mdr_engine_step_z_q31(&q, -(1 << 25) + 1, &o), MDR_OK);
+        assert_int_equal(o.d, INT32_MIN + 64);
+        assert_int_equal(q.flags, 0);
+    }
     /* the energy sum: saturates at the int64 limit */
     small(&tq, &q, 0);
     assert_int_equal(mdr_engine_step_d_q31(&q, MDR_Q29_ONE / 8, &o), MDR_OK);

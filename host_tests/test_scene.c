@@ -286,6 +286,20 @@ static void scene_errors(void **state)
     assert_int_equal(mdr_scene_step_d_f32(&s, NAN, &o), MDR_E_NONFINITE);
     assert_int_equal(mdr_scene_step_F_f32(&s, INFINITY, &o), MDR_E_NONFINITE);
     assert_int_equal(mdr_scene_step_z_f32(&s, 1e-8f, &o), MDR_E_CONTROL); /* no machine */
+    assert_int_equal(mdr_scene_step_z_f32(&s, -1e-8f, &o), MDR_E_CONTROL);
+    {
+        /* separated, force only, without a machine: no z is a separated
+         * tick, whatever its sign (the step's own path must not answer it) */
+        mdr_scene_f32 s2, k2;
+        assert_int_equal(mdr_scene_init_paraboloid_f32(&s2, 1e-6f, 1e6f, 0.05f, 0.0f, 0.0f, MDR_OUT_FORCE, NULL),
+                         MDR_OK);
+        k2 = s2;
+        assert_int_equal(mdr_scene_step_z_f32(&s2, -1e-8f, &o), MDR_E_CONTROL);
+        assert_int_equal(mdr_scene_step_z_f32(&s2, 0.0f, &o), MDR_E_CONTROL);
+        assert_memory_equal(&s2, &k2, sizeof s2);
+    }
+    assert_int_equal(mdr_scene_step_z_f32(NULL, 1e-8f, &o), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_F_f32(&s, 1e-8f, NULL), MDR_E_NULL);
     assert_int_equal(mdr_scene_step_d_f32(&s, 3e38f, &o), MDR_E_OVERFLOW);
     assert_memory_equal(&s, &before, sizeof s);
 }

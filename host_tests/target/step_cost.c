@@ -22,10 +22,14 @@
  * per instruction and the SysTick counts that clock at the board's 25 MHz:
  * 3.2 counts per instruction (the scale is measured by a loop of known
  * length, not assumed), so round(counts / scale) is the exact number of
- * instructions between two reads. A tick's cost is the count around its
- * call minus the count around a call of an empty function with the same
- * arguments, plus that function's own two instructions: the instructions
- * of the step from its entry to its return. Exactly reproducible.
+ * instructions between two reads. Each step is called through a timing
+ * function of its type (never inlined or specialised: noipa), which reads
+ * the SysTick, calls the step through a pointer and reads it again; the same
+ * function calling an empty step of the same type gives the count of
+ * everything but the step, so a tick's cost is its count minus the empty
+ * one's, plus the empty step's own two instructions: the instructions of the
+ * step from its entry to its return, none of the harness's. Exactly
+ * reproducible.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -52,18 +56,44 @@ typedef struct {
 } stats;
 
 static double scale; /* SysTick counts per instruction */
-static uint32_t empty_counts;
 
 static uint32_t counts(uint32_t t0, uint32_t t1)
 {
     return (t0 - t1) & MDR_PORT_CYCLES_MASK; /* SysTick counts down */
 }
 
-__attribute__((noinline)) static mdr_status empty_f32(void *e, float u, void *o)
-{
-    (void)e, (void)u, (void)o;
-    return 0;
-}
+/* the timing function of a step type, its empty step, and the count the
+ * timing function gives for the empty step (the least of 16 calls) */
+#define TIMED(NAME, ENG, UT, OUT)                                                                     \
+    __attribute__((noinline, noipa)) static mdr_status NAME(mdr_status (*f)(ENG *, UT, OUT *), ENG *e, UT u, \
+                                                           OUT *o, uint32_t *c)                      \
+    {                                                                                                 \
+        const uint32_t t0 = MDR_PORT_SYST_CVR;                                                        \
+        const mdr_status st = f(e, u, o);                                                             \
+        const uint32_t t1 = MDR_PORT_SYST_CVR;                                                        \
+        *c = counts(t0, t1);                                                                          \
+        return st;                                                                                    \
+    }                                                                                                 \
+    __attribute__((noinline, noipa)) static mdr_status NAME##_empty(ENG *e, UT u, OUT *o)            \
+    {                                                                                                 \
+        (void)e, (void)u, (void)o;                                                                    \
+        return 0;                                                                                     \
+    }                                                                                                 \
+    static uint32_t NAME##_base(void)                                                                 \
+    {                                                                                                 \
+        static ENG e;                                                                                 \
+        static OUT o;                                                                                 \
+        uint32_t c, best = 0xFFFFFFFFu;                                                               \
+        for (int i = 0; i < 16; i++) {                                                                \
+            (void)NAME(NAME##_empty, &e, (UT)1, &o, &c);                                              \
+            best = c < best ? c : best;                                                               \
+        }                                                                                             \
+        return best;                                                                                  \
+    }
+
+TIMED(timed_spring_f32, mdr_engine_f32, float, mdr_step_f32)
+TIMED(timed_spring_q31, mdr_engine_q31, int32_t, mdr_step_q31)
+TIMED(timed_scene_f32, mdr_scene_f32, float, mdr_step_f32)
 
 /* counts per instruction: 2^16 turns of a 2-instruction loop */
 static double calibrate(void)
@@ -74,15 +104,17 @@ static double calibrate(void)
     return (double)counts(t0, t1) / (2.0 * (double)(1u << 16));
 }
 
-static uint32_t instr(uint32_t c)
+/* instructions of a step: its count less the timing function's own
+ * (base), plus the empty step's two instructions */
+static uint32_t instr(uint32_t c, uint32_t base)
 {
-    double v = (double)c / scale - (double)empty_counts / scale + 2.0;
+    double v = (double)c / scale - (double)base / scale + 2.0;
     return v > 0 ? (uint32_t)(v + 0.5) : 0;
 }
 
-static void note(stats *s, uint32_t c, int cls)
+static void note(stats *s, uint32_t c, uint32_t base, int cls)
 {
-    uint32_t k = instr(c);
+    uint32_t k = instr(c, base);
     s->sum += k;
     s->n++;
     s->cls_sum[cls] += k;
@@ -112,34 +144,12 @@ static void print(const char *engine, const char *arith, const char *cycle, cons
 
 enum { SEPARATED, PINNED, MOVING };
 
-/* One measured tick: t0, the call, t1, with no other code between. */
-#define TICK(call, cnt)                         \
-    do {                                        \
-        uint32_t t0_ = MDR_PORT_SYST_CVR, t1_;  \
-        st = (call);                            \
-        t1_ = MDR_PORT_SYST_CVR;                \
-        (cnt) = counts(t0_, t1_);               \
-    } while (0)
-
-static void measure_empty(void)
-{
-    mdr_step_f32 o;
-    mdr_status st;
-    uint32_t c, best = 0xFFFFFFFFu;
-    int i;
-    for (i = 0; i < 16; i++) {
-        TICK(empty_f32(&o, 1.0f, &o), c);
-        (void)st;
-        best = c < best ? c : best;
-    }
-    empty_counts = best;
-}
-
 /* the spring engine in f32 / q31 and the scene in f32 over n ticks of
  * control ctl; cls from the state before and after each tick */
 #define RUN_SPRING(NAME, SFX, IN, STEP)                                              \
     static int NAME(mdr_engine_##SFX *e, long n, stats *s)                           \
     {                                                                                \
+        const uint32_t base = timed_spring_##SFX##_base();                           \
         long i;                                                                      \
         mdr_step_##SFX o;                                                            \
         mdr_status st;                                                               \
@@ -148,12 +158,12 @@ static void measure_empty(void)
             int was = e->contact;                                                    \
             uint16_t k0 = e->k;                                                      \
             __typeof__(e->a) a0 = e->a;                                              \
-            TICK(STEP(e, IN[i], &o), c);                                             \
+            st = timed_spring_##SFX(STEP, e, IN[i], &o, &c);                          \
             if (st != MDR_OK) {                                                      \
                 printf("step-cost: tick %ld refused (%d)\n", i, st);                 \
                 return 1;                                                            \
             }                                                                        \
-            note(s, c, !was && !e->contact ? SEPARATED                               \
+            note(s, c, base, !was && !e->contact ? SEPARATED                         \
                        : was && e->contact && e->a == a0 && e->k == k0 && o.event == 0 \
                            ? PINNED                                                  \
                            : MOVING);                                                \
@@ -168,6 +178,7 @@ RUN_SPRING(run_spring_z_q31, q31, in_q31, mdr_engine_step_z_q31)
 
 static int run_scene_f32(mdr_scene_f32 *e, long n, int machine, stats *s)
 {
+    const uint32_t base = timed_scene_f32_base();
     long i;
     mdr_step_f32 o;
     mdr_status st;
@@ -175,16 +186,12 @@ static int run_scene_f32(mdr_scene_f32 *e, long n, int machine, stats *s)
         uint32_t c;
         int was = e->contact;
         float t0 = e->tau;
-        if (machine) {
-            TICK(mdr_scene_step_z_f32(e, in_f32[i], &o), c);
-        } else {
-            TICK(mdr_scene_step_d_f32(e, in_f32[i], &o), c);
-        }
+        st = timed_scene_f32(machine ? mdr_scene_step_z_f32 : mdr_scene_step_d_f32, e, in_f32[i], &o, &c);
         if (st != MDR_OK) {
             printf("step-cost: scene tick %ld refused (%d)\n", i, st);
             return 1;
         }
-        note(s, c, !was && !e->contact ? SEPARATED : was && e->contact && e->tau == t0 ? PINNED : MOVING);
+        note(s, c, base, !was && !e->contact ? SEPARATED : was && e->contact && e->tau == t0 ? PINNED : MOVING);
     }
     return 0;
 }
@@ -206,10 +213,9 @@ int main(void)
     long i;
     mdr_port_cycles_init();
     scale = calibrate();
-    measure_empty();
     printf("# %s (QEMU -icount shift=7): %.4f SysTick counts per instruction (measured), "
-           "empty call %.1f instructions of overhead\n",
-           BENCH_CORE, scale, (double)empty_counts / scale);
+           "timing function %.0f instructions around the step\n",
+           BENCH_CORE, scale, (double)timed_spring_f32_base() / scale - 2.0);
     /* grips: the exact sphere, N = 1024, the README's cycle */
     for (i = 1; i <= STEPS; i++) {
         in_f32[i] = (float)bench_path(i);

@@ -110,6 +110,9 @@ typedef struct {
     double ik_m;   /**< 1/k_m [m/N] (z = d + F/k_m); 0 without machine */
     double ih;     /**< 1/h of the table [1/m] */
     double iE2;    /**< 1/(2E*) [1/Pa] */
+    double z_min;  /**< the least z [m] a separated step_z answers without its full tick:
+                       minus the largest finite value of the type with a machine, the largest
+                       without one (no z qualifies) */
     mdr_energy_f64 en; /**< energy bookkeeping (with MDR_OUT_ENERGY) */
     uint16_t k;   /**< spring holding the edge: x_k <= a <= x_{k+1} */
     uint8_t contact; /**< 1 in contact, 0 separated */

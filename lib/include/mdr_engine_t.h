@@ -92,6 +92,9 @@ typedef struct {
     MDR_T ik_m;   /**< 1/k_m [m/N] (z = d + F/k_m); 0 without machine */
     MDR_T ih;     /**< 1/h of the table [1/m] */
     MDR_T iE2;    /**< 1/(2E*) [1/Pa] */
+    MDR_T z_min;  /**< the least z [m] a separated step_z answers without its full tick:
+                       minus the largest finite value of the type with a machine, the largest
+                       without one (no z qualifies) */
     MDR_SFX(mdr_energy) en; /**< energy bookkeeping (with MDR_OUT_ENERGY) */
     uint16_t k;   /**< spring holding the edge: x_k <= a <= x_{k+1} */
     uint8_t contact; /**< 1 in contact, 0 separated */

@@ -126,6 +126,9 @@ typedef struct {
     int32_t al_z, ka_z;  /**< machine branch weights 1/(1+kappa), kappa/(1+kappa), Q1.30 */
     int32_t z_in;        /**< 2^sz/(1+kappa), Q1.30: internal control = z * z_in */
     int32_t z_k;         /**< kappa/2^sz, Q1.30: z = d/2^sz + z_k F */
+    int32_t z_min;       /**< the least raw z a separated step_z answers without its full tick:
+                              max(-2^30, -2^(31-sz)), so that z 2^sz fits (INT32_MAX without a machine) */
+    int32_t z_mul;       /**< 2^sz: a separated machine's depth d = z 2^sz (Q2.29 of D0) */
     uint8_t sh;          /**< table Q1.30 of Dg -> engine Q2.29 of D0: right shift k+1 */
     uint8_t sz;          /**< Z0 = 2^sz D0 */
     uint8_t machine;     /**< 1 if k_m > 0 */

@@ -58,6 +58,9 @@ typedef struct {
     float gw;      /**< dl_w(a)/D_s at a = a_s: sqrt(2 pi w a_s/E*)/D_s */
     float ga;      /**< the same with w_adv */
     float kap;     /**< 2E* a_s/k_m, 0 without a machine */
+    float z_min;   /**< the least z [m] a separated step_z answers without its full tick:
+                        minus the largest finite value of the type with a machine, the largest
+                        without one (no z qualifies) */
     float tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine */
     float uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     float nu;      /**< n/(n+1) */

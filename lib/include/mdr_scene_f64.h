@@ -58,6 +58,9 @@ typedef struct {
     double gw;      /**< dl_w(a)/D_s at a = a_s: sqrt(2 pi w a_s/E*)/D_s */
     double ga;      /**< the same with w_adv */
     double kap;     /**< 2E* a_s/k_m, 0 without a machine */
+    double z_min;   /**< the least z [m] a separated step_z answers without its full tick:
+                        minus the largest finite value of the type with a machine, the largest
+                        without one (no z qualifies) */
     double tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine */
     double uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     double nu;      /**< n/(n+1) */

@@ -40,6 +40,9 @@ typedef struct {
     MDR_T gw;      /**< dl_w(a)/D_s at a = a_s: sqrt(2 pi w a_s/E*)/D_s */
     MDR_T ga;      /**< the same with w_adv */
     MDR_T kap;     /**< 2E* a_s/k_m, 0 without a machine */
+    MDR_T z_min;   /**< the least z [m] a separated step_z answers without its full tick:
+                        minus the largest finite value of the type with a machine, the largest
+                        without one (no z qualifies) */
     MDR_T tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine */
     MDR_T uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     MDR_T nu;      /**< n/(n+1) */
