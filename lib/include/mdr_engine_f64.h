@@ -110,8 +110,14 @@ typedef struct {
     double ik_m;   /**< 1/k_m [m/N] (z = d + F/k_m); 0 without machine */
     double ih;     /**< 1/h of the table [1/m] */
     double iE2;    /**< 1/(2E*) [1/Pa] */
+    /* the two jumps that cross the table, known from init (per control
+     * mode, index MDR_CONTROL_* - 1; the step's units: d, F/(2E*), z) */
+    double u_min[3]; /**< the least U of the receding branch over the table's nodes: a
+                         fold whose landing aims below it pulls off (no scan) */
+    double t_in[3];  /**< sqrt(a) of the landing of a jump-in from a = 0 */
     mdr_energy_f64 en; /**< energy bookkeeping (with MDR_OUT_ENERGY) */
     uint16_t k;   /**< spring holding the edge: x_k <= a <= x_{k+1} */
+    uint16_t k_in[3]; /**< the spring of t_in; 0xFFFF where none is known (the step scans) */
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the instance has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* */
