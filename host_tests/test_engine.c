@@ -694,6 +694,105 @@ static void wavy_jumps_tick_invariant(void **st)
 }
 #endif
 
+/* The jumps an engine knows from init (mdr_engine_t.h: u_min, t_in, k_in,
+ * t_fold, k_fold, u_fold: the pull-off and the jump-in from a = 0 without a
+ * scan) against the same engine with that knowledge cleared, which scans:
+ * two approach-retract cycles per profile, control, arithmetic and w_adv,
+ * tick by tick: identical (events, jump counts, d, F, a: no tolerance; the
+ * known jumps are the scan's own results, kept at init, and the outermost
+ * fold is searched from the same nodes). Profiles: the sphere (300
+ * springs), the wavy profile (64 and 1024 springs: folds inside the table,
+ * the outermost one not a pull-off), a coarse paraboloid (8 springs: the
+ * pull-off inside spring 0), the cone. */
+#define TOL_KNOWN64 0.0
+#define TOL_KNOWN32 0.0
+#define KNOWN_CYCLES(SFX, T, TOL)                                                                              \
+    static void known_cycles_##SFX(const mdr_table_##SFX *t, uint8_t ctl, double umax, double umin, double wa,   \
+                                   int *po, int *ji)                                                            \
+    {                                                                                                           \
+        mdr_engine_##SFX e, s;                                                                                  \
+        double dm = 0, Fm = 0, am = 0, dd = 0, dF = 0, da = 0;                                                  \
+        const long n = 1500;                                                                                    \
+        long i;                                                                                                 \
+        assert_int_equal(mdr_engine_init_##SFX(&e, t, (T)1e6, (T)0.05, (T)wa,                                 \
+                                                (T)(ctl == MDR_CONTROL_MACHINE ? 2.0 : 0.0)),                  \
+                         MDR_OK);                                                                               \
+        s = e;                                                                                                  \
+        for (i = 0; i < 3; i++) {                                                                               \
+            s.k_in[i] = s.k_fold[i] = 0xFFFF;                                                                   \
+            s.u_min[i] = s.u_fold[i] = -(T)INFINITY;                                                            \
+        }                                                                                                       \
+        for (i = 1; i <= 4 * n; i++) {                                                                          \
+            const long q = i % (2 * n);                                                                         \
+            const double u = q <= n ? umin + (umax - umin) * (double)q / (double)n                              \
+                                    : umax + (umin - umax) * (double)(q - n) / (double)n;                       \
+            mdr_step_##SFX a, b;                                                                                \
+            const mdr_status ra = step_##SFX##_of(ctl)(&e, (T)u, &a), rb = step_##SFX##_of(ctl)(&s, (T)u, &b); \
+            assert_int_equal(ra, rb);                                                                           \
+            if (ra != MDR_OK) {                                                                                 \
+                fail_msg(#SFX " control %u, w_adv %g: tick %ld (u %g) refused (%d)", ctl, wa, i, u, ra);       \
+            }                                                                                                   \
+            if (a.event != b.event || a.jumps != b.jumps) {                                                     \
+                fail_msg(#SFX " control %u, w_adv %g: tick %ld, event %u (%u jumps) known, %u (%u) scanned",    \
+                         ctl, wa, i, a.event, a.jumps, b.event, b.jumps);                                       \
+            }                                                                                                   \
+            *po += a.event == MDR_EV_PULL_OFF;                                                                  \
+            *ji += a.event == MDR_EV_JUMP_IN;                                                                   \
+            dm = fmax(dm, fabs((double)a.d));                                                                   \
+            Fm = fmax(Fm, fabs((double)a.F));                                                                   \
+            am = fmax(am, (double)a.a);                                                                         \
+            dd = fmax(dd, fabs((double)a.d - (double)b.d));                                                     \
+            dF = fmax(dF, fabs((double)a.F - (double)b.F));                                                     \
+            da = fmax(da, fabs((double)a.a - (double)b.a));                                                     \
+        }                                                                                                       \
+        rel_le(dd, 0, dm, TOL, #SFX " known jumps: d against the scan's");                                      \
+        rel_le(dF, 0, Fm, TOL, #SFX " known jumps: F against the scan's");                                      \
+        rel_le(da, 0, am, TOL, #SFX " known jumps: a against the scan's");                                      \
+    }
+#define step_f64_of step64_of
+#define step_f32_of step32_of
+KNOWN_CYCLES(f64, double, TOL_KNOWN64)
+KNOWN_CYCLES(f32, float, TOL_KNOWN32)
+
+static void known_jumps_match_scan(void **st)
+{
+    const double sph[3] = {1e-6, 0, 0}, wav[3] = {100e-6, 0.5e-6, 5e-6}, par[3] = {10e-6, 0, 0},
+                 con[3] = {1.2, 0, 0};
+    const struct {
+        uint8_t kind;
+        const double *p;
+        uint16_t n;
+        double x_max, dmax, dmin, Fmax, Fmin;
+    } cases[] = {
+        {MDR_PROFILE_SPHERE, sph, 300, 0.7e-6, 0.1e-6, -0.3e-6, 1e-7, -0.4e-6},
+        {MDR_PROFILE_WAVY, wav, 64, 80e-6, 3e-6, -3e-6, 2e-3, -2e-3},
+        {MDR_PROFILE_WAVY, wav, 1024, 80e-6, 3e-6, -3e-6, 2e-3, -2e-3},
+        {MDR_PROFILE_PARABOLOID, par, 8, 50e-6, 2e-6, -2e-6, 1e-4, -1e-4},
+        {MDR_PROFILE_CONE, con, 256, 20e-6, 0.5e-6, -0.5e-6, 1e-4, -1e-4},
+    };
+    int po = 0, ji = 0;
+    (void)st;
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        float pf[3] = {(float)cases[c].p[0], (float)cases[c].p[1], (float)cases[c].p[2]};
+        mdr_table_f64 t64;
+        mdr_table_f32 t32;
+        table64(&t64, cases[c].kind, cases[c].p, cases[c].n, cases[c].x_max);
+        table32(&t32, cases[c].kind, pf, cases[c].n, (float)cases[c].x_max);
+        for (uint8_t ctl = 1; ctl <= 3; ctl++) {
+            const double umax = ctl == MDR_CONTROL_LOAD ? cases[c].Fmax : cases[c].dmax;
+            const double umin = ctl == MDR_CONTROL_LOAD ? cases[c].Fmin : cases[c].dmin;
+            for (int k = 0; k < 2; k++) {
+                known_cycles_f64(&t64, ctl, umax, umin, 0.01 + 0.01 * k, &po, &ji);
+                known_cycles_f32(&t32, ctl, umax, umin, 0.01 + 0.01 * k, &po, &ji);
+            }
+        }
+    }
+    if (getenv("MDR_TOL_REPORT")) {
+        printf("  known jumps: %d pull-offs, %d jump-ins\n", po, ji);
+    }
+    assert_true(po >= 100 && ji >= 80); /* the known jumps were there to take (measured 104, 88) */
+}
+
 static void flat_punch_wall(void **st)
 {
     const double pd[3] = {1e-6, 0, 0};
@@ -1080,6 +1179,7 @@ int main(void)
 #ifndef MDR_TARGET_TEST /* (2.7 M ticks: host only; the target runs the same code) */
         cmocka_unit_test(wavy_jumps_tick_invariant),
 #endif
+        cmocka_unit_test(known_jumps_match_scan),
         cmocka_unit_test(engine_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -3,7 +3,7 @@
  * host_tests/target/cmocka.h: the part of the cmocka API the host tests use
  * (cmocka_unit_test, cmocka_run_group_tests[_name], assert_true,
  * assert_false, assert_int_equal, assert_memory_equal, assert_string_equal,
- * fail, print_message, print_error), for the target builds, where the
+ * fail, fail_msg, print_message, print_error), for the target builds, where the
  * Debian cmocka library does not exist. On the include path before the
  * system's only in target builds (make target-test). It prints the lines
  * cmocka prints ([ RUN ], [ OK ], [ FAILED ], the summary), so host and
@@ -58,6 +58,8 @@ static inline void mdr_cm_int(long long a, long long b, const char *file, int li
 #define assert_string_equal(a, b) \
     (strcmp((a), (b)) == 0 ? (void)0 : mdr_cm_fail(__FILE__, __LINE__, "strings differ"))
 #define fail() mdr_cm_fail(__FILE__, __LINE__, "fail()")
+/* cmocka's: the message (a format and its arguments), then fail() */
+#define fail_msg(...) (print_error("ERROR: " __VA_ARGS__), print_error("\n"), mdr_cm_fail(__FILE__, __LINE__, "fail_msg()"))
 
 static inline void print_message(const char *fmt, ...)
 {

@@ -95,8 +95,18 @@ typedef struct {
     MDR_T z_min;  /**< the least z [m] a separated step_z answers without its full tick:
                        minus the largest finite value of the type with a machine, the largest
                        without one (no z qualifies) */
+    /* the two jumps that cross the table, known from init (per control
+     * mode, index MDR_CONTROL_* - 1; the step's units: d, F/(2E*), z) */
+    MDR_T u_min[3]; /**< the least U of the receding branch over the table's nodes: a
+                         fold whose landing aims below it pulls off (no scan) */
+    MDR_T t_in[3];  /**< sqrt(a) of the landing of a jump-in from a = 0 */
+    MDR_T t_fold[3]; /**< sqrt(a) of the outermost fold of the receding branch */
+    MDR_T u_fold[3]; /**< its U less U's rounding bound there: a move toward a control
+                          below it from above the fold stops at the fold (no scan) */
     MDR_SFX(mdr_energy) en; /**< energy bookkeeping (with MDR_OUT_ENERGY) */
     uint16_t k;   /**< spring holding the edge: x_k <= a <= x_{k+1} */
+    uint16_t k_in[3]; /**< the spring of t_in; 0xFFFF where none is known (the step scans) */
+    uint16_t k_fold[3]; /**< the spring of t_fold; 0xFFFF where none is known */
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the instance has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* */
