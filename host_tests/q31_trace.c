@@ -9,6 +9,9 @@
  * integer arithmetic, so any difference is a bug (undefined or
  * implementation-defined behaviour). Tables and engine constants are set up
  * in double on the host, identically for every build (IEEE, no contraction).
+ * The q31 table-free scene (mdr_scene_q31.h) is traced the same way: the
+ * paraboloid, the cone and the power law n = 3, each under every control
+ * over the same raw path, its constants made in double from an f64 scene.
  *
  * `q31_trace --tables` prints the four q31 tables (nodes and headers) as
  * const C (build/host/q31_trace_tables.h); a build with -DQ31_TRACE_TABLES
@@ -67,6 +70,85 @@ static int table(unsigned k, mdr_table_q31 *tq)
 }
 #endif
 
+/* the same cycle's control at tick i (raw Q2.29 units) */
+static int32_t path_u(int i)
+{
+    return i <= 600    ? (int32_t)(i * (MDR_Q29_ONE / 3000))
+           : i <= 2400 ? (int32_t)((600 - 3600 * (i - 600) / 1800) * (MDR_Q29_ONE / 3000))
+                       : (int32_t)((-3000 + 6 * (i - 2400)) * (MDR_Q29_ONE / 3000));
+}
+
+static void mix_step(mdr_status st, const mdr_step_q31 *o)
+{
+    mix(st);
+    mix(o->a);
+    mix(o->d);
+    mix(o->F);
+    mix(o->z);
+    mix(o->a0);
+    mix(o->d0);
+    mix(o->F0);
+    mix(o->a1);
+    mix(o->d1);
+    mix(o->F1);
+    mix(o->event);
+    mix(o->jumps);
+}
+
+#if MDR_CFG_SCENE
+/* the q31 scenes: every monomial under every control */
+static int trace_scenes(long *steps, long *events, long *refused)
+{
+    static const struct {
+        uint8_t kind;
+        double p[3], a_max;
+    } ms[] = {
+        {MDR_PROFILE_PARABOLOID, {1e-6, 0, 0}, 0.9e-6},
+        {MDR_PROFILE_CONE, {0.3, 0, 0}, 2e-6},
+        {MDR_PROFILE_POWERLAW, {1e12, 3, 0}, 1e-6},
+    };
+    unsigned k;
+    int ctl, i;
+    for (k = 0; k < sizeof ms / sizeof ms[0]; k++) {
+        for (ctl = 1; ctl <= 3; ctl++) {
+            mdr_contact_f64 c;
+            mdr_scene_f64 s;
+            mdr_energy_f64 en;
+            mdr_scene_q31 q;
+            if (mdr_contact_init_f64(&c, ms[k].kind, ms[k].p, 1e6, 0.01) != MDR_OK ||
+                mdr_scene_init_contact_f64(&s, &c, 0.005, ctl == MDR_CONTROL_MACHINE ? 0.5 : 0.0, MDR_OUT_ALL,
+                                           &en) != MDR_OK ||
+                mdr_scene_init_q31_f64(&q, &s, ms[k].a_max) != MDR_OK) {
+                printf("q31 trace: scene init failed\n");
+                return 1;
+            }
+            mix(q.gc);
+            mix(q.c_w);
+            mix(q.c_adv);
+            mix(q.z_in);
+            mix(q.tf[ctl - 1]);
+            mix(q.uf[ctl - 1]);
+            for (i = 1; i <= 3000; i++) {
+                const int32_t u = path_u(i);
+                mdr_step_q31 o = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+                mdr_status st = ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, u, &o)
+                                : ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&q, u / 64, &o)
+                                                          : mdr_scene_step_z_q31(&q, u / 8, &o);
+                mix_step(st, &o);
+                *events += o.event != MDR_EV_NONE;
+                *refused += st != MDR_OK;
+                ++*steps;
+            }
+            mix(q.en.work);
+            mix(q.en.dissipated);
+            mix((int64_t)q.en.cycles);
+            mix(q.flags);
+        }
+    }
+    return 0;
+}
+#endif
+
 static int trace(void)
 {
     long steps = 0, events = 0, refused = 0;
@@ -100,28 +182,14 @@ static int trace(void)
             }
             /* 0 -> +0.2 -> -1.0 units and back up to 0.2: approach, pull-off, re-contact */
             for (i = 1; i <= 3000; i++) {
-                int32_t u = i <= 600    ? (int32_t)(i * (MDR_Q29_ONE / 3000))
-                            : i <= 2400 ? (int32_t)((600 - 3600 * (i - 600) / 1800) * (MDR_Q29_ONE / 3000))
-                                        : (int32_t)((-3000 + 6 * (i - 2400)) * (MDR_Q29_ONE / 3000));
+                const int32_t u = path_u(i);
                 mdr_step_q31 o = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
                 mdr_status st = ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_q31(&e, u, &o)
                                 : ctl == MDR_CONTROL_LOAD ? mdr_engine_step_F_q31(&e, u / 64, &o)
                                                           : mdr_engine_step_z_q31(&e, u, &o);
-                mix(st);
+                mix_step(st, &o);
                 events += o.event != MDR_EV_NONE;
                 refused += st != MDR_OK;
-                mix(o.a);
-                mix(o.d);
-                mix(o.F);
-                mix(o.z);
-                mix(o.a0);
-                mix(o.d0);
-                mix(o.F0);
-                mix(o.a1);
-                mix(o.d1);
-                mix(o.F1);
-                mix(o.event);
-                mix(o.jumps);
                 steps++;
             }
             mix(e.en.work);
@@ -130,6 +198,11 @@ static int trace(void)
             mix(e.flags);
         }
     }
+#if MDR_CFG_SCENE
+    if (trace_scenes(&steps, &events, &refused) != 0) {
+        return 1;
+    }
+#endif
     printf("q31 trace: %016llx (%ld steps, %ld events, %ld refused)\n", (unsigned long long)h, steps,
            events, refused);
     return 0;

@@ -20,6 +20,21 @@
  *   events: the same event codes and tick as the spring engine;
  *   energy: dissipated energy of a cycle within 1e-12 of the engine's
  *     (measured 1.3e-13).
+ * The q31 scene (mdr_scene_q31.h), made from the f64 scene, against it at
+ * the same (quantised) control over whole cycles of the paraboloid, the
+ * cone and the power law n = 3 under each control:
+ *   TOL_Q31_LSB = 256 LSB of Q2.29 in d and F (measured 150.4, d of the
+ *     paraboloid under load; 1.8 to 11.8 under fixed grips: the large errors
+ *     are d in the last ticks before a pull-off under load or a soft
+ *     machine, where the edge is ill-conditioned: U' -> 0 at the fold, so a
+ *     rounding of U of one LSB moves tau by ~sqrt(2 LSB/U''));
+ *     TOL_Q31_GRIPS = 24 LSB under fixed grips (measured 11.8, n = 3);
+ *     relative to the cycle's max|F| and max|d|, TOL_Q31_REL = 3e-5
+ *     (measured 9.7e-6, d of the paraboloid under load); the same event
+ *     codes at the same ticks, one completed cycle each, dissipated energy
+ *     within TOL_Q31_EN = 1e-5 relative (measured 1.3e-6);
+ *   TOL_Q31_JKR = 1 LSB of F0 (measured 0.1): its pull-off forces against
+ *     the JKR closed forms.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -45,6 +60,11 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, the spring engine, scenes with events, every 
 #define TOL_JKR 2e-15
 #define TOL_EN 1e-12
 #define TICKS 4000
+#define TOL_Q31_LSB 256.0
+#define TOL_Q31_GRIPS 24.0
+#define TOL_Q31_REL 3e-5
+#define TOL_Q31_EN 1e-5
+#define TOL_Q31_JKR 1.0
 
 static const double R = 1e-6, E = 1e6, W = 0.05;
 
@@ -202,7 +222,8 @@ static void scene_cone_vs_engine(void **state)
     compare_profile(MDR_PROFILE_CONE, 0.3, 1e-4);
 }
 
-/* JKR pull-off: load -1.5 pi w R, grips -5/6 pi w R (4.36, 4.38) */
+/* JKR pull-off: load -1.5 pi w R, grips -5/6 pi w R (4.36, 4.38), the f64
+ * scene and (q31 builds) the q31 scene made from it, on the same path */
 static void scene_jkr_pull_off(void **state)
 {
     int ctl;
@@ -214,9 +235,19 @@ static void scene_jkr_pull_off(void **state)
         int i, seen = 0;
         mdr_contact_f64 c;
         const double p[3] = {R, 0, 0};
+#if MDR_CFG_Q31
+        mdr_scene_q31 q;
+        mdr_step_q31 oq;
+        double unit;
+        int seen_q = 0;
+#endif
         assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, p, E, W), MDR_OK);
         extremes(&c, ctl, 0.0, &umax, &umin);
         assert_int_equal(mdr_scene_init_paraboloid_f64(&s, R, E, W, W, 0.0, MDR_OUT_EVENTS, NULL), MDR_OK);
+#if MDR_CFG_Q31
+        assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 2e-6), MDR_OK);
+        unit = (ctl == MDR_CONTROL_GRIPS ? q.D0 : q.F0) / 536870912.0;
+#endif
         for (i = 0; i <= TICKS; i++) {
             assert_int_equal(step_scene64(&s, ctl, path(i, umax, umin), &o), MDR_OK);
             if (o.event == MDR_EV_PULL_OFF) {
@@ -224,8 +255,25 @@ static void scene_jkr_pull_off(void **state)
                 rel_le(o.F0, want, 0, TOL_JKR, ctl == MDR_CONTROL_LOAD ? "JKR load" : "JKR grips");
                 seen++;
             }
+#if MDR_CFG_Q31
+            {
+                const int32_t raw = (int32_t)lround(path(i, umax, umin) / unit);
+                assert_int_equal(ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, raw, &oq)
+                                                          : mdr_scene_step_F_q31(&q, raw, &oq),
+                                 MDR_OK);
+                if (oq.event == MDR_EV_PULL_OFF) {
+                    const double lsb = q.F0 / 536870912.0, err = fabs(oq.F0 * lsb - want) / lsb;
+                    printf("  q31 control %d: pull-off F0 %.9e, %.2f LSB from JKR\n", ctl, oq.F0 * lsb, err);
+                    assert_true(err <= TOL_Q31_JKR);
+                    seen_q++;
+                }
+            }
+#endif
         }
         assert_int_equal(seen, 1);
+#if MDR_CFG_Q31
+        assert_int_equal(seen_q, 1);
+#endif
     }
 }
 
@@ -304,6 +352,210 @@ static void scene_errors(void **state)
     assert_memory_equal(&s, &before, sizeof s);
 }
 
+
+#if MDR_CFG_Q31
+/* One cycle of the q31 scene against the f64 scene it was made from, at
+ * the same raw control: the worst error in LSB of Q2.29 and relative to
+ * the cycle's peaks; events, cycles and dissipated energy equal */
+static double q31_cycle(uint8_t kind, double p0, double p1, int ctl, double k_m)
+{
+    mdr_contact_f64 c;
+    mdr_scene_f64 s;
+    mdr_scene_q31 q;
+    mdr_energy_f64 en;
+    const double k[3] = {p0, p1, 0};
+    double worst = 0, eabs_d = 0, eabs_F = 0, Fpk = 0, dpk = 0, umax, umin, a_max = 0;
+    int i;
+    assert_int_equal(mdr_contact_init_f64(&c, kind, k, E, W), MDR_OK);
+    extremes(&c, ctl, k_m, &umax, &umin);
+    /* the cycle's largest radius (f64), a little more: the q31 scene's a_max */
+    assert_int_equal(mdr_scene_init_contact_f64(&s, &c, W / 2, k_m, MDR_OUT_ALL, NULL), MDR_OK);
+    for (i = 0; i <= TICKS; i++) {
+        mdr_step_f64 o;
+        assert_int_equal(step_scene64(&s, ctl, path(i, umax, umin), &o), MDR_OK);
+        a_max = fmax(a_max, o.a);
+    }
+    assert_int_equal(mdr_scene_init_contact_f64(&s, &c, W / 2, k_m, MDR_OUT_ALL, &en), MDR_OK);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 1.01 * a_max), MDR_OK);
+    assert_int_equal(q.outputs, MDR_OUT_ALL | MDR_OUT_ENERGY);
+    for (i = 0; i <= TICKS; i++) {
+        const double u = path(i, umax, umin);
+        const double unit = (ctl == MDR_CONTROL_GRIPS ? q.D0 : ctl == MDR_CONTROL_LOAD ? q.F0 : q.Z0) / 536870912.0;
+        const int32_t raw = (int32_t)lround(u / unit);
+        mdr_step_f64 o;
+        mdr_step_q31 oq;
+        double ed, eF;
+        if (ctl == MDR_CONTROL_GRIPS) {
+            assert_int_equal(mdr_scene_step_d_f64(&s, raw * unit, &o), MDR_OK);
+            assert_int_equal(mdr_scene_step_d_q31(&q, raw, &oq), MDR_OK);
+        } else if (ctl == MDR_CONTROL_LOAD) {
+            assert_int_equal(mdr_scene_step_F_f64(&s, raw * unit, &o), MDR_OK);
+            assert_int_equal(mdr_scene_step_F_q31(&q, raw, &oq), MDR_OK);
+        } else {
+            assert_int_equal(mdr_scene_step_z_f64(&s, raw * unit, &o), MDR_OK);
+            assert_int_equal(mdr_scene_step_z_q31(&q, raw, &oq), MDR_OK);
+        }
+        assert_int_equal(o.event, oq.event);
+        ed = fabs(oq.d * (q.D0 / 536870912.0) - o.d);
+        eF = fabs(oq.F * (q.F0 / 536870912.0) - o.F);
+        eabs_d = fmax(eabs_d, ed);
+        eabs_F = fmax(eabs_F, eF);
+        worst = fmax(worst, fmax(ed / q.D0, eF / q.F0) * 536870912.0);
+        Fpk = fmax(Fpk, fabs(o.F));
+        dpk = fmax(dpk, fabs(o.d));
+    }
+    assert_int_equal(q.flags, 0);
+    assert_int_equal(q.en.cycles, en.cycles);
+    assert_int_equal(en.cycles, 1);
+    {
+        rel_le(mdr_scene_q31_energy(&q, q.en.last_cycle), en.last_cycle, 0, TOL_Q31_EN, "q31 scene energy");
+    }
+    printf("  (profile %d control %d k_m %g: %.2e of max|F|, %.2e of max|d|, %.1f LSB; energy %.2e)\n", kind, ctl,
+           k_m, eabs_F / Fpk, eabs_d / dpk, worst,
+           fabs(mdr_scene_q31_energy(&q, q.en.last_cycle) / en.last_cycle - 1.0));
+    rel_le(Fpk + eabs_F, Fpk, 0, TOL_Q31_REL, "q31 scene F / max|F|");
+    rel_le(dpk + eabs_d, dpk, 0, TOL_Q31_REL, "q31 scene d / max|d|");
+    return worst;
+}
+
+/* whole cycles of three monomials under each control against f64 */
+static void scene_q31_vs_f64(void **state)
+{
+    double worst = 0;
+    (void)state;
+    /* every monomial (paraboloid, cone, power laws n = 3 and n = 8, the
+     * steepest: the int64 headroom of U' and U'') under every control, the
+     * machine soft and stiff */
+    static const struct {
+        uint8_t kind;
+        double p0, p1;
+    } prof[4] = {{MDR_PROFILE_PARABOLOID, 1e-6, 0},
+                 {MDR_PROFILE_CONE, 0.3, 0},
+                 {MDR_PROFILE_POWERLAW, 1e12, 3},
+                 {MDR_PROFILE_POWERLAW, 1e42, MDR_POWERLAW_N_MAX}};
+    int j, ctl;
+    for (j = 0; j < 4; j++) {
+        for (ctl = 1; ctl <= 3; ctl++) {
+            const double w = q31_cycle(prof[j].kind, prof[j].p0, prof[j].p1, ctl, ctl == 3 ? 0.5 : 0.0);
+            printf("  q31 scene profile %d control %d: %.1f LSB\n", prof[j].kind, ctl, w);
+            assert_true(ctl != MDR_CONTROL_GRIPS || w <= TOL_Q31_GRIPS);
+            worst = fmax(worst, w);
+        }
+        worst = fmax(worst, q31_cycle(prof[j].kind, prof[j].p0, prof[j].p1, MDR_CONTROL_MACHINE, 20.0));
+    }
+    printf("  q31 scene against f64: worst %.1f LSB (tolerance %.0f)\n", worst, TOL_Q31_LSB);
+    assert_true(worst <= TOL_Q31_LSB);
+}
+
+/* bad input: named errors, the scene unchanged; saturation flagged */
+static void scene_q31_errors(void **state)
+{
+    mdr_scene_f64 s;
+    mdr_scene_q31 q, before;
+    mdr_step_q31 o;
+    int32_t raw = 7;
+    int i;
+    (void)state;
+    assert_int_equal(mdr_scene_init_paraboloid_f64(&s, R, E, W, W / 2, 0.0, MDR_OUT_ALL, NULL), MDR_OK);
+    assert_int_equal(mdr_scene_init_q31_f64(NULL, &s, 1e-6), MDR_E_NULL);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, NULL, 1e-6), MDR_E_NULL);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, NAN), MDR_E_NONFINITE);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, INFINITY), MDR_E_NONFINITE);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 0.0), MDR_E_PARAM);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, -1e-6), MDR_E_PARAM);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 1e-9), MDR_E_PARAM); /* below the folds */
+    {
+        mdr_scene_f64 m;
+        assert_int_equal(mdr_scene_init_paraboloid_f64(&m, R, E, W, W / 2, 1e-9, MDR_OUT_ALL, NULL), MDR_OK);
+        assert_int_equal(mdr_scene_init_q31_f64(&q, &m, 1e-6), MDR_E_CONTROL); /* kappa 2e6 */
+    }
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 0.7e-6), MDR_OK);
+    assert_int_equal(mdr_scene_q31_from_si(&q, MDR_Q_D, 1e-8f, &raw), MDR_OK);
+    assert_int_equal(mdr_scene_step_d_q31(&q, raw, &o), MDR_OK);
+    assert_int_equal(q.contact, 1);
+    before = q;
+    assert_int_equal(mdr_scene_step_d_q31(NULL, raw, &o), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_d_q31(&q, raw, NULL), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_z_q31(&q, raw, &o), MDR_E_CONTROL); /* no machine */
+    assert_memory_equal(&q, &before, sizeof q);
+    /* past a = L (d of 2 units is far beyond g(L) here): refused */
+    assert_int_equal(mdr_scene_step_d_q31(&q, 2 * MDR_Q29_ONE, &o), MDR_E_OUTSIDE);
+    assert_int_equal(q.flags, MDR_FLAG_OUTSIDE);
+    q.flags = 0;
+    assert_memory_equal(&q, &before, sizeof q);
+    assert_int_equal(mdr_scene_step_F_q31(&q, 2 * MDR_Q29_ONE, &o), MDR_E_OUTSIDE);
+    assert_int_equal(mdr_scene_clear_flags_q31(&q), MDR_FLAG_OUTSIDE);
+    assert_int_equal(mdr_scene_clear_flags_q31(NULL), 0);
+    assert_memory_equal(&q, &before, sizeof q);
+    /* an input beyond +-2 units saturates and sets MDR_FLAG_SAT: the
+     * separated body at d = -2 units */
+    assert_int_equal(mdr_scene_step_d_q31(&q, INT32_MIN, &o), MDR_OK);
+    assert_int_equal(o.d, -2 * MDR_Q29_ONE);
+    assert_int_equal(o.F, 0);
+    assert_int_equal(q.contact, 0);
+    assert_int_equal(mdr_scene_clear_flags_q31(&q), MDR_FLAG_SAT);
+    for (i = 0; i < 3; i++) { /* in range: no flag */
+        assert_int_equal(mdr_scene_step_d_q31(&q, -MDR_Q29_ONE, &o), MDR_OK);
+    }
+    assert_int_equal(q.flags, 0);
+    {
+        /* without a machine no z is answered, whatever its sign or range,
+         * separated and force only as well (the step's own path must not
+         * take it), and nothing is flagged */
+        mdr_scene_f64 f;
+        mdr_scene_q31 k;
+        const int32_t zs[4] = {-MDR_Q29_ONE, 0, INT32_MIN, INT32_MAX};
+        assert_int_equal(mdr_scene_init_paraboloid_f64(&f, R, E, W, W / 2, 0.0, MDR_OUT_FORCE, NULL), MDR_OK);
+        assert_int_equal(mdr_scene_init_q31_f64(&q, &f, 0.7e-6), MDR_OK);
+        k = q;
+        for (i = 0; i < 4; i++) {
+            assert_int_equal(mdr_scene_step_z_q31(&q, zs[i], &o), MDR_E_CONTROL);
+        }
+        assert_memory_equal(&q, &k, sizeof q);
+    }
+    {
+        /* a machine with 2^sz = 64 (kappa = 2 E* L/k_m in [63, 127)): the
+         * last z whose depth z 2^6 fits (-2^25: d = INT32_MIN exactly) and
+         * the first beyond it, separated, with every output (the full
+         * tick) and force only (the step's own separated path) */
+        int m;
+        for (m = 0; m < 2; m++) {
+            mdr_scene_f64 f;
+            double km;
+            assert_int_equal(mdr_scene_init_paraboloid_f64(&f, R, E, W, W / 2, 1.0, m ? MDR_OUT_FORCE : MDR_OUT_ALL,
+                                                           NULL),
+                             MDR_OK);
+            assert_int_equal(mdr_scene_init_q31_f64(&q, &f, 0.7e-6), MDR_OK);
+            km = 2.0 * E * (double)q.L / 90.0; /* kappa 90 */
+            assert_int_equal(mdr_scene_init_paraboloid_f64(&f, R, E, W, W / 2, km, m ? MDR_OUT_FORCE : MDR_OUT_ALL,
+                                                           NULL),
+                             MDR_OK);
+            assert_int_equal(mdr_scene_init_q31_f64(&q, &f, 0.7e-6), MDR_OK);
+            assert_int_equal(q.sz, 6);
+            assert_int_equal(mdr_scene_step_z_q31(&q, -(1 << 25), &o), MDR_OK);
+            assert_int_equal(o.d, INT32_MIN);
+            assert_int_equal(o.F, 0);
+            assert_int_equal(q.flags, 0);
+            assert_int_equal(mdr_scene_step_z_q31(&q, -(1 << 25) - 1, &o), MDR_OK);
+            assert_int_equal(o.d, INT32_MIN);
+            assert_int_equal(q.flags, MDR_FLAG_SAT);
+            q.flags = 0;
+            assert_int_equal(mdr_scene_step_z_q31(&q, -(1 << 25) + 1, &o), MDR_OK);
+            assert_int_equal(o.d, INT32_MIN + 64);
+            assert_int_equal(q.flags, 0);
+            assert_int_equal(q.contact, 0);
+        }
+    }
+    /* conversions */
+    assert_int_equal(mdr_scene_q31_from_si(NULL, MDR_Q_D, 1e-8f, &raw), MDR_E_NULL);
+    assert_int_equal(mdr_scene_q31_from_si(&q, 9, 1e-8f, &raw), MDR_E_PARAM);
+    assert_int_equal(mdr_scene_q31_from_si(&q, MDR_Q_D, NAN, &raw), MDR_E_NONFINITE);
+    assert_int_equal(mdr_scene_q31_from_si(&q, MDR_Q_D, 1.0f, &raw), MDR_E_OVERFLOW);
+    assert_true(mdr_scene_q31_out(NULL, MDR_Q_D, 5) == 0.0f);
+    assert_true(fabs(mdr_scene_q31_out(&q, MDR_Q_F, MDR_Q29_ONE) - q.F0) <= 1e-7 * q.F0);
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -312,6 +564,10 @@ int main(void)
         cmocka_unit_test(scene_jkr_pull_off),
         cmocka_unit_test(scene_outputs),
         cmocka_unit_test(scene_errors),
+#if MDR_CFG_Q31
+        cmocka_unit_test(scene_q31_vs_f64),
+        cmocka_unit_test(scene_q31_errors),
+#endif
     };
     printf("sizeof mdr_scene_f32 %u B, mdr_scene_f64 %u B\n", (unsigned)sizeof(mdr_scene_f32),
            (unsigned)sizeof(mdr_scene_f64));

@@ -11,7 +11,8 @@
  * jumped or let go). Engines: `spring` (N = 1024 springs) and `scene`
  * (table-free), each force only (MDR_OUT_FORCE: F and d; no radius, z,
  * events or energy), in f32 and q31 (inputs converted to raw Q2.29 before
- * counting). Cycles: `grips`, the README's 20 000-tick approach-retract of
+ * counting; the q31 scene made from the f32 one with a_max the spring
+ * table's x_max). Cycles: `grips`, the README's 20 000-tick approach-retract of
  * the exact sphere (spring engine; the scene runs the paraboloid of the
  * same radius) under fixed grips (host_tests/bench_scene.h); `afm`, an
  * approach-retract of a 20 nm paraboloid tip on polystyrene (E* = 3.8 GPa,
@@ -94,6 +95,7 @@ static uint32_t counts(uint32_t t0, uint32_t t1)
 TIMED(timed_spring_f32, mdr_engine_f32, float, mdr_step_f32)
 TIMED(timed_spring_q31, mdr_engine_q31, int32_t, mdr_step_q31)
 TIMED(timed_scene_f32, mdr_scene_f32, float, mdr_step_f32)
+TIMED(timed_scene_q31, mdr_scene_q31, int32_t, mdr_step_q31)
 
 /* counts per instruction: 2^16 turns of a 2-instruction loop */
 static double calibrate(void)
@@ -176,25 +178,31 @@ RUN_SPRING(run_spring_q31, q31, in_q31, mdr_engine_step_d_q31)
 RUN_SPRING(run_spring_z_f32, f32, in_f32, mdr_engine_step_z_f32)
 RUN_SPRING(run_spring_z_q31, q31, in_q31, mdr_engine_step_z_q31)
 
-static int run_scene_f32(mdr_scene_f32 *e, long n, int machine, stats *s)
-{
-    const uint32_t base = timed_scene_f32_base();
-    long i;
-    mdr_step_f32 o;
-    mdr_status st;
-    for (i = 1; i <= n; i++) {
-        uint32_t c;
-        int was = e->contact;
-        float t0 = e->tau;
-        st = timed_scene_f32(machine ? mdr_scene_step_z_f32 : mdr_scene_step_d_f32, e, in_f32[i], &o, &c);
-        if (st != MDR_OK) {
-            printf("step-cost: scene tick %ld refused (%d)\n", i, st);
-            return 1;
-        }
-        note(s, c, base, !was && !e->contact ? SEPARATED : was && e->contact && e->tau == t0 ? PINNED : MOVING);
+/* a scene in f32 / q31 over n ticks of fixed grips or (machine) the base */
+#define RUN_SCENE(NAME, SFX, IN)                                                                       \
+    static int NAME(mdr_scene_##SFX *e, long n, int machine, stats *s)                                 \
+    {                                                                                                  \
+        const uint32_t base = timed_scene_##SFX##_base();                                              \
+        long i;                                                                                        \
+        mdr_step_##SFX o;                                                                              \
+        mdr_status st;                                                                                 \
+        for (i = 1; i <= n; i++) {                                                                     \
+            uint32_t c;                                                                                \
+            int was = e->contact;                                                                      \
+            __typeof__(e->tau) t0 = e->tau;                                                            \
+            st = timed_scene_##SFX(machine ? mdr_scene_step_z_##SFX : mdr_scene_step_d_##SFX, e, IN[i], \
+                                   &o, &c);                                                            \
+            if (st != MDR_OK) {                                                                        \
+                printf("step-cost: scene %s tick %ld refused (%d)\n", #SFX, i, st);                   \
+                return 1;                                                                              \
+            }                                                                                          \
+            note(s, c, base, !was && !e->contact ? SEPARATED : was && e->contact && e->tau == t0 ? PINNED : MOVING); \
+        }                                                                                              \
+        return 0;                                                                                      \
     }
-    return 0;
-}
+
+RUN_SCENE(run_scene_f32, f32, in_f32)
+RUN_SCENE(run_scene_q31, q31, in_q31)
 
 /* the afm cycle's base position at tick i (1 ... AFM_TICKS), metres */
 static double afm_path(long i)
@@ -230,13 +238,15 @@ int main(void)
         mdr_engine_f32 e;
         mdr_engine_q31 q;
         mdr_scene_f32 s;
-        stats a = {0}, b = {0}, d = {0};
+        mdr_scene_q31 sq;
+        stats a = {0}, b = {0}, d = {0}, dq = {0};
         if (mdr_engine_init_f32(&e, &t, 1e6f, 0.05f, 0.02f, 0) != MDR_OK ||
             mdr_engine_outputs_f32(&e, MDR_OUT_FORCE) != MDR_OK ||
             mdr_engine_init_q31_f32(&q, &tq, 1e6f, 0.05f, 0.02f, 0) != MDR_OK ||
             mdr_engine_outputs_q31(&q, MDR_OUT_FORCE) != MDR_OK ||
             mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.02f, 0.0f, MDR_OUT_FORCE, NULL) !=
-                MDR_OK) {
+                MDR_OK ||
+            mdr_scene_init_q31_f32(&sq, &s, 0.7e-6f) != MDR_OK) {
             printf("step-cost: init failed\n");
             return 1;
         }
@@ -247,10 +257,20 @@ int main(void)
             run_scene_f32(&s, STEPS, 0, &d)) {
             return 1;
         }
+        for (i = 1; i <= STEPS; i++) { /* (the q31 scene's own depth unit) */
+            if (mdr_scene_q31_from_si(&sq, MDR_Q_D, in_f32[i], &in_q31[i]) != MDR_OK) {
+                printf("step-cost: q31 scene input %ld\n", i);
+                return 1;
+            }
+        }
+        if (run_scene_q31(&sq, STEPS, 0, &dq)) {
+            return 1;
+        }
         printf("engine,arith,core,cycle,mean,max,separated,pinned,moving\n");
         print("spring", "f32", "grips", &a);
         print("spring", "q31", "grips", &b);
         print("scene", "f32", "grips", &d);
+        print("scene", "q31", "grips", &dq);
     }
     /* afm: a 20 nm paraboloid through a 0.2 N/m cantilever */
     for (i = 1; i <= AFM_TICKS; i++) {
@@ -266,13 +286,15 @@ int main(void)
         mdr_engine_f32 e;
         mdr_engine_q31 q;
         mdr_scene_f32 s;
-        stats a = {0}, b = {0}, d = {0};
+        mdr_scene_q31 sq;
+        stats a = {0}, b = {0}, d = {0}, dq = {0};
         if (mdr_engine_init_f32(&e, &t, Eafm, wafm, 0.5f * wafm, km) != MDR_OK ||
             mdr_engine_outputs_f32(&e, MDR_OUT_FORCE) != MDR_OK ||
             mdr_engine_init_q31_f32(&q, &tq, Eafm, wafm, 0.5f * wafm, km) != MDR_OK ||
             mdr_engine_outputs_q31(&q, MDR_OUT_FORCE) != MDR_OK ||
             mdr_scene_init_paraboloid_f32(&s, 20e-9f, Eafm, wafm, 0.5f * wafm, km, MDR_OUT_FORCE, NULL) !=
-                MDR_OK) {
+                MDR_OK ||
+            mdr_scene_init_q31_f32(&sq, &s, 12e-9f) != MDR_OK) {
             printf("step-cost: afm init failed\n");
             return 1;
         }
@@ -283,9 +305,19 @@ int main(void)
             run_scene_f32(&s, AFM_TICKS, 1, &d)) {
             return 1;
         }
+        for (i = 1; i <= AFM_TICKS; i++) {
+            if (mdr_scene_q31_from_si(&sq, MDR_Q_Z, in_f32[i], &in_q31[i]) != MDR_OK) {
+                printf("step-cost: q31 scene afm input %ld\n", i);
+                return 1;
+            }
+        }
+        if (run_scene_q31(&sq, AFM_TICKS, 1, &dq)) {
+            return 1;
+        }
         print("spring", "f32", "afm", &a);
         print("spring", "q31", "afm", &b);
         print("scene", "f32", "afm", &d);
+        print("scene", "q31", "afm", &dq);
     }
     return 0;
 }

@@ -11,6 +11,7 @@
 #include "mdr_engine.h"
 #include "mdr_scene.h"
 #include "mdr_q31.h"
+#include "mdr_scene_q31.h"
 #include "mdr_fit.h"
 
 #define MDR_VERSION_MAJOR 0
