@@ -332,6 +332,10 @@ static void scene_errors(void **state)
     assert_int_equal(mdr_scene_step_d_f32(NULL, 1e-8f, &o), MDR_E_NULL);
     assert_int_equal(mdr_scene_step_d_f32(&s, 1e-8f, NULL), MDR_E_NULL);
     assert_int_equal(mdr_scene_step_d_f32(&s, NAN, &o), MDR_E_NONFINITE);
+    /* (in contact under grips, force only: the step's own move, per
+     * direction, must leave these to the slow path) */
+    assert_int_equal(mdr_scene_step_d_f32(&s, INFINITY, &o), MDR_E_NONFINITE);
+    assert_int_equal(mdr_scene_step_d_f32(&s, -INFINITY, &o), MDR_E_NONFINITE);
     assert_int_equal(mdr_scene_step_F_f32(&s, INFINITY, &o), MDR_E_NONFINITE);
     assert_int_equal(mdr_scene_step_z_f32(&s, 1e-8f, &o), MDR_E_CONTROL); /* no machine */
     assert_int_equal(mdr_scene_step_z_f32(&s, -1e-8f, &o), MDR_E_CONTROL);
