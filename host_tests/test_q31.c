@@ -367,6 +367,68 @@ static void errors(void **st)
     assert_true(mdr_q31_energy(NULL, 1) == 0.0f);
 }
 
+/* A stiff machine's pinned band near the table's end (as test_scene's
+ * scene_q31_stiff_top): z 2^sz = (1 + kappa x) D - kappa G at a band end
+ * is a depth of tens of units of D0 at kappa ~ 160 before its quotient by
+ * 2^sz, which must come first (saturated first, the band's lower end fell
+ * to 4 units / 2^sz and kept a retract pinned far below its branch). A
+ * paraboloid (R = 1 um, a table of NSPR springs to 0.7 um: g exact) with
+ * little adhesion (w = 5e-5, w_adv = w/2) under a machine of kappa 160 at
+ * L: 600 ticks of z up to where a = 0.98 L, 600 down to half that z; the
+ * q31 engine against the f64 engine on the same table and raw controls:
+ * the same events, d and F within TOL_BAND_LSB = 16 LSB (the residual
+ * bound TOL_LSB of a tick, twice: measured 2.3) */
+#define TOL_BAND_LSB 16.0
+static void machine_band_near_end(void **st)
+{
+    const double p[3] = {1e-6, 0, 0}, E = 1e6, w = 5e-5;
+    mdr_contact_f64 c;
+    mdr_table_f64 t;
+    mdr_table_q31 tq;
+    mdr_engine_f64 e0, e;
+    mdr_engine_q31 q;
+    double L, km, unit, Dq, Fq, z_top = 0, worst = 0;
+    int i, pinned = 0, moved = 0;
+    (void)st;
+    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, p, E, w), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f64(&t, nf, NSPR, &c, 0.7e-6), MDR_OK);
+    assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t), MDR_OK);
+    L = (double)tq.L + (double)tq.L_lo;
+    km = 2.0 * E * L / 160.0; /* kappa 160 at L */
+    assert_int_equal(mdr_engine_init_f64(&e0, &t, E, w, w / 2, km), MDR_OK);
+    assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, w, w / 2, km), MDR_OK);
+    unit = (double)q.Z0 / 536870912.0;
+    Dq = (double)q.D0 / 536870912.0;
+    Fq = 2 * E * L * (double)q.D0 / 536870912.0;
+    e = e0;
+    for (i = 1; z_top == 0; i++) { /* the f64 engine's z at a = 0.98 L */
+        mdr_step_f64 o;
+        assert_true(i < 100000);
+        assert_int_equal(mdr_engine_step_z_f64(&e, i * 1e-4 * (double)q.Z0, &o), MDR_OK);
+        z_top = o.a >= 0.98 * L ? o.z : 0;
+    }
+    e = e0;
+    for (i = 0; i <= 1200; i++) {
+        const double z = i <= 600 ? z_top * i / 600 : z_top * (1.0 - 0.5 * (i - 600) / 600);
+        const int32_t raw = (int32_t)lround(z / unit);
+        const double a0 = e.a;
+        mdr_step_f64 o;
+        mdr_step_q31 oq;
+        assert_int_equal(mdr_engine_step_z_f64(&e, raw * unit, &o), MDR_OK);
+        assert_int_equal(mdr_engine_step_z_q31(&q, raw, &oq), MDR_OK);
+        assert_int_equal(oq.event, o.event);
+        pinned += i > 600 && e.a == a0;
+        moved += i > 600 && e.a < a0;
+        worst = fmax(worst, fabs(oq.d * Dq - o.d) / Dq);
+        worst = fmax(worst, fabs(oq.F * Fq - o.F) / Fq);
+    }
+    printf("  kappa 160 up to a = 0.98 L and back (f64: %d pinned, %d receding ticks): worst %.1f LSB "
+           "(tolerance %.0f)\n",
+           pinned, moved, worst, TOL_BAND_LSB);
+    assert_true(pinned >= 5 && moved > 100);
+    assert_true(worst <= TOL_BAND_LSB);
+}
+
 /* Saturation: each quantity driven past its format sets MDR_FLAG_SAT and
  * returns the saturated value, never a wrapped one. */
 static void saturation(void **st)
@@ -424,6 +486,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(errors),
         cmocka_unit_test(saturation),
+        cmocka_unit_test(machine_band_near_end),
 #ifndef MDR_TARGET_TEST
         cmocka_unit_test(scenes_vs_ref),
 #endif

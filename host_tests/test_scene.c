@@ -34,8 +34,15 @@
  *     codes at the same ticks, one completed cycle each, dissipated energy
  *     within TOL_Q31_EN = 1e-5 relative (measured 1.3e-6);
  *   TOL_Q31_JKR = 1 LSB of F0 (measured 0.1): its pull-off forces against
- *     the JKR closed forms.
+ *     the JKR closed forms;
+ *   single ticks of any size (scene_q31_any_step: from separated or a small
+ *     contact to 20 ... 100 % of the cycle's largest control and back, one
+ *     tick each): accepted as by the f64 scene, d and F within
+ *     TOL_Q31_STEP = 32 LSB (measured 6.6: no ill-conditioned fold here);
+ *     the same tolerance for a stiff machine's pinned band near a = L
+ *     (scene_q31_stiff_top).
  */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -65,6 +72,7 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, the spring engine, scenes with events, every 
 #define TOL_Q31_REL 3e-5
 #define TOL_Q31_EN 1e-5
 #define TOL_Q31_JKR 1.0
+#define TOL_Q31_STEP 32.0
 
 static const double R = 1e-6, E = 1e6, W = 0.05;
 
@@ -451,6 +459,166 @@ static void scene_q31_vs_f64(void **state)
     assert_true(worst <= TOL_Q31_LSB);
 }
 
+/* One tick of any size: the q31 scene answers every control its range
+ * holds, as the f64 scene does, whatever the distance from the edge (the
+ * cycles above move a little per tick; a root search climbing from a small
+ * contact toward a root near a = L must not step past L and refuse). Per
+ * profile, control and start (separated, or a contact at 5 % of the
+ * largest control), one tick to 20, 50, 80 and 100 % of it, then one back
+ * to the start: both scenes accept, the same event, d and F within
+ * TOL_Q31_STEP. */
+static double q31_any_step(uint8_t kind, double p0, double p1, int ctl, double k_m)
+{
+    mdr_contact_f64 c;
+    mdr_scene_f64 s0, s;
+    mdr_scene_q31 q0, q;
+    const double k[3] = {p0, p1, 0}, to[4] = {0.2, 0.5, 0.8, 1.0}, from[2] = {-1.0, 0.05};
+    double umax, umin, a_max = 0, worst = 0, unit;
+    int i, j, m;
+    assert_int_equal(mdr_contact_init_f64(&c, kind, k, E, W), MDR_OK);
+    extremes(&c, ctl, k_m, &umax, &umin);
+    assert_int_equal(mdr_scene_init_contact_f64(&s0, &c, W / 2, k_m, MDR_OUT_ALL, NULL), MDR_OK);
+    s = s0;
+    for (i = 0; i <= TICKS / 4; i++) { /* the largest radius: at umax */
+        mdr_step_f64 o;
+        assert_int_equal(step_scene64(&s, ctl, path(i, umax, umin), &o), MDR_OK);
+        a_max = fmax(a_max, o.a);
+    }
+    assert_int_equal(mdr_scene_init_q31_f64(&q0, &s0, 1.01 * a_max), MDR_OK);
+    unit = (ctl == MDR_CONTROL_GRIPS ? q0.D0 : ctl == MDR_CONTROL_LOAD ? q0.F0 : q0.Z0) / 536870912.0;
+    for (j = 0; j < 2; j++) {
+        for (m = 0; m < 4; m++) {
+            /* separated: a control below the touch point (grips, machine:
+             * a negative depth; load: F = 0, which touches without a jump
+             * only at w_adv = 0, so load starts from its small contact) */
+            const double u0 = j == 0 ? (ctl == MDR_CONTROL_LOAD ? 0.05 * umax : -0.5 * umax) : from[j] * umax;
+            const double us[3] = {u0, to[m] * umax, u0};
+            int t;
+            s = s0;
+            q = q0;
+            for (t = 0; t < 3; t++) {
+                const int32_t raw = (int32_t)lround(us[t] / unit);
+                mdr_step_f64 o;
+                mdr_step_q31 oq;
+                mdr_status sq = ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, raw, &oq)
+                                : ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&q, raw, &oq)
+                                                          : mdr_scene_step_z_q31(&q, raw, &oq);
+                assert_int_equal(step_scene64(&s, ctl, raw * unit, &o), MDR_OK);
+                if (sq != MDR_OK) {
+                    printf("q31 scene profile %d control %d k_m %g: tick %d to %g of umax from %g refused (%d)\n",
+                           kind, ctl, k_m, t, us[t] / umax, u0 / umax, sq);
+                }
+                assert_int_equal(sq, MDR_OK);
+                assert_int_equal(oq.event, o.event);
+                worst = fmax(worst, fabs(oq.d * (q.D0 / 536870912.0) - o.d) / q.D0 * 536870912.0);
+                worst = fmax(worst, fabs(oq.F * (q.F0 / 536870912.0) - o.F) / q.F0 * 536870912.0);
+            }
+        }
+    }
+    return worst;
+}
+
+static void scene_q31_any_step(void **state)
+{
+    static const struct {
+        uint8_t kind;
+        double p0, p1;
+    } prof[4] = {{MDR_PROFILE_PARABOLOID, 1e-6, 0},
+                 {MDR_PROFILE_CONE, 0.3, 0},
+                 {MDR_PROFILE_POWERLAW, 1e12, 3},
+                 {MDR_PROFILE_POWERLAW, 1e42, MDR_POWERLAW_N_MAX}};
+    double worst = 0;
+    int j, ctl;
+    (void)state;
+    for (j = 0; j < 4; j++) {
+        for (ctl = 1; ctl <= 3; ctl++) {
+            worst = fmax(worst, q31_any_step(prof[j].kind, prof[j].p0, prof[j].p1, ctl, ctl == 3 ? 0.5 : 0.0));
+        }
+        worst = fmax(worst, q31_any_step(prof[j].kind, prof[j].p0, prof[j].p1, MDR_CONTROL_MACHINE, 20.0));
+    }
+    printf("  q31 scene, single ticks of any size against f64: worst %.1f LSB (tolerance %.0f)\n", worst,
+           TOL_Q31_STEP);
+    assert_true(worst <= TOL_Q31_STEP);
+}
+
+/* A stiff machine's pinned band near a = L: z 2^sz = (1 + kappa x) D -
+ * kappa G at a band end is a depth of (1 + kappa x) times the scene's
+ * (tens of units of D0 at kappa ~ 160), which only its quotient by 2^sz
+ * brings back into range (a band end saturated before that division put
+ * the band's lower end at 2^-5 units, so a retract's ticks stayed pinned
+ * far below the receding branch: d 0.5 % of D0 off, found by fuzz_step).
+ * The paraboloid with little adhesion (w = W/1000, w_adv = w/2: D ~ g, so
+ * the band's ends are large) under a machine of kappa 160 at L: 600
+ * ticks of z up to where a = 0.98 L, 600 back down to half that z, against
+ * the f64 scene at the same raw control: the same events, d and F within
+ * TOL_Q31_STEP. */
+static void scene_q31_stiff_top(void **state)
+{
+    mdr_scene_f64 s0, s;
+    mdr_scene_q31 q;
+    double z_top = 0, worst = 0, unit, km;
+    int i, pinned = 0, moved = 0;
+    (void)state;
+    assert_int_equal(mdr_scene_init_paraboloid_f64(&s0, R, E, W / 1000, W / 2000, 1.0, MDR_OUT_ALL, NULL), MDR_OK);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s0, 0.7e-6), MDR_OK);
+    km = 2.0 * E * (double)q.L / 160.0; /* kappa 160 at L */
+    assert_int_equal(mdr_scene_init_paraboloid_f64(&s0, R, E, W / 1000, W / 2000, km, MDR_OUT_ALL, NULL), MDR_OK);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s0, 0.7e-6), MDR_OK);
+    unit = q.Z0 / 536870912.0;
+    s = s0;
+    for (i = 1; z_top == 0; i++) { /* the f64 scene's z at a = 0.98 L */
+        mdr_step_f64 o;
+        assert_true(i < 100000);
+        assert_int_equal(mdr_scene_step_z_f64(&s, i * 1e-4 * q.Z0, &o), MDR_OK);
+        z_top = o.a >= 0.98 * (double)q.L ? o.z : 0;
+    }
+    s = s0;
+    for (i = 0; i <= 1200; i++) {
+        const double z = i <= 600 ? z_top * i / 600 : z_top * (1.0 - 0.5 * (i - 600) / 600);
+        const int32_t raw = (int32_t)lround(z / unit);
+        const double t0 = s.tau;
+        mdr_step_f64 o;
+        mdr_step_q31 oq;
+        assert_int_equal(mdr_scene_step_z_f64(&s, raw * unit, &o), MDR_OK);
+        assert_int_equal(mdr_scene_step_z_q31(&q, raw, &oq), MDR_OK);
+        assert_int_equal(oq.event, o.event);
+        pinned += i > 600 && s.tau == t0;
+        moved += i > 600 && s.tau < t0;
+        worst = fmax(worst, fabs(oq.d * (q.D0 / 536870912.0) - o.d) / q.D0 * 536870912.0);
+        worst = fmax(worst, fabs(oq.F * (q.F0 / 536870912.0) - o.F) / q.F0 * 536870912.0);
+    }
+    printf("  q31 scene, kappa 160 up to a = 0.98 L and back (f64: %d pinned, %d receding ticks): worst %.1f LSB "
+           "(tolerance %.0f)\n",
+           pinned, moved, worst, TOL_Q31_STEP);
+    assert_true(pinned >= 5 && moved > 100);
+    assert_true(worst <= TOL_Q31_STEP);
+}
+
+/* z = d + F/k_m of a scene's outputs where F/k_m is finite but F iFs kap
+ * (the order the scene once multiplied in) passes the largest float: a
+ * paraboloid under a soft machine (k_m = 1e-9 N/m) at F = 1e25 N (a ~ 20 km:
+ * the scene has no range to leave): accepted, z finite and within 4 eps of
+ * d + F/k_m in double (found by fuzz_step: z was +inf with MDR_OK); the same
+ * F on an f32 scene whose z is beyond float refuses (MDR_E_OVERFLOW),
+ * unchanged. */
+static void scene_z_range(void **state)
+{
+    mdr_scene_f32 s, k;
+    mdr_step_f32 o;
+    (void)state;
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.025f, 1e-9f, MDR_OUT_ALL, NULL),
+                     MDR_OK);
+    assert_int_equal(mdr_scene_step_F_f32(&s, 1e25f, &o), MDR_OK);
+    assert_true(isfinite(o.z));
+    rel_le((double)o.z, (double)o.d + 1e25 / 1e-9, 0, 4 * FLT_EPSILON, "scene f32 z at F = 1e25 N");
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.025f, 1e-12f, MDR_OUT_ALL, NULL),
+                     MDR_OK);
+    assert_int_equal(mdr_scene_step_F_f32(&s, 1e25f, &o), MDR_OK);
+    k = s;
+    assert_int_equal(mdr_scene_step_F_f32(&s, 1e30f, &o), MDR_E_OVERFLOW); /* z = 1e42 m */
+    assert_memory_equal(&s, &k, sizeof s);
+}
+
 /* bad input: named errors, the scene unchanged; saturation flagged */
 static void scene_q31_errors(void **state)
 {
@@ -568,8 +736,11 @@ int main(void)
         cmocka_unit_test(scene_jkr_pull_off),
         cmocka_unit_test(scene_outputs),
         cmocka_unit_test(scene_errors),
+        cmocka_unit_test(scene_z_range),
 #if MDR_CFG_Q31
         cmocka_unit_test(scene_q31_vs_f64),
+        cmocka_unit_test(scene_q31_any_step),
+        cmocka_unit_test(scene_q31_stiff_top),
         cmocka_unit_test(scene_q31_errors),
 #endif
     };

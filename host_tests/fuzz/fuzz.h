@@ -116,6 +116,21 @@ enum { FZ_D, FZ_F, FZ_Z };
 #undef FZ_T
 #undef FZ_SFX
 
+/* A q31 step refused with MDR_E_OUTSIDE (the engine, the scene): the
+ * target v (raw Q2.29 of its control's unit, saturated to +-2 units) lies
+ * beyond the advancing branch's value at the range's end, where the depth
+ * is D and G the integral of g (units of D0 and L D0): U = D (grips),
+ * D - G (load), D + kappa (D - G) (machine, kappa = 1/al_z - 1, z as a
+ * depth z 2^sz), to 8 LSB of its format (1 + kappa for the machine) */
+static inline void fz_q31_beyond(int ctl, int32_t v, double D, double G, int machine, int32_t al_z, unsigned sz)
+{
+    double kap = machine ? 1073741824.0 / al_z - 1 : 0;
+    double vs = (v > 2 * MDR_Q29_ONE ? 2 * MDR_Q29_ONE : v < -2 * MDR_Q29_ONE ? -2 * MDR_Q29_ONE : v) / 536870912.0;
+    double U = ctl == FZ_D ? D : ctl == FZ_F ? D - G : D + kap * (D - G);
+    double u = ctl == FZ_Z ? vs * (double)(1u << sz) : vs;
+    FZ_CHECK(U < u + 8.0 / 536870912.0 * (1 + kap));
+}
+
 /* q31 engine: the same checks in its integer formats */
 static inline void fz_check_q31(const mdr_engine_q31 *e, const mdr_engine_q31 *before, mdr_status st,
                          const mdr_step_q31 *out, const mdr_step_q31 *out0)
@@ -172,18 +187,76 @@ static inline mdr_status fz_step_q31(mdr_engine_q31 *e, int ctl, int32_t v, mdr_
         const mdr_table_q31 *tab = e->tab;
         const mdr_node_q31 *nn = &tab->node[tab->n];
         double sc = (double)tab->Dg / (double)e->D0 / 1073741824.0;
-        double D = nn->g * sc - e->c_adv / 536870912.0, G = nn->G * sc;
-        double kap = e->machine ? 1073741824.0 / e->al_z - 1 : 0;
-        double vs = (v > 2 * MDR_Q29_ONE ? 2 * MDR_Q29_ONE : v < -2 * MDR_Q29_ONE ? -2 * MDR_Q29_ONE : v) /
-                    536870912.0;
-        double U = ctl == FZ_D ? D : ctl == FZ_F ? D - G : D + kap * (D - G);
-        double u = ctl == FZ_Z ? vs * (double)(1u << e->sz) : vs;
-        FZ_CHECK(!tab->wall && U < u + 8.0 / 536870912.0 * (1 + kap));
+        FZ_CHECK(!tab->wall);
+        fz_q31_beyond(ctl, v, nn->g * sc - e->c_adv / 536870912.0, nn->G * sc, e->machine, e->al_z, e->sz);
     }
     if (v > 2 * MDR_Q29_ONE || v < -2 * MDR_Q29_ONE) {
         FZ_CHECK(st != MDR_OK || (e->flags & MDR_FLAG_SAT));
     }
     return st;
 }
+
+#if MDR_CFG_SCENE
+/* One step of a q31 scene (raw Q2.29 input), checked as the q31 engine's:
+ * a named status, never MDR_E_NOCONV; refused: nothing changed (the sticky
+ * flags aside), no output written, and MDR_E_OUTSIDE only for a target
+ * beyond a = L (fz_q31_beyond, at tau = 1: D = g(L)/D0 - c_adv, G = g(L)/D0
+ * /(n+1)); accepted: outputs the state's, 0 <= tau, a <= 2^30, tau = F = 0
+ * separated, and, where nothing saturated, the edge inside the Hess band
+ * g(tau) - c_w tau <= d <= g(tau) - c_adv tau (D0 units, g = gc tau^2n), to
+ * FZ_Q31_BAND_LSB LSB of Q2.29 plus 2^-22 of its terms (tau's rounding
+ * moves g by 2n LSB, the pinned relation's products a few more). Where
+ * the control is coarser than d, plus FZ_Q31_CTL_LSB LSB of the control in
+ * d (a jump-in aims MDR_S_UTOL = 4 LSB of the control past the fold's, the
+ * band's ends round, so the edge may sit that far from the control's own
+ * root): held at fixed load, over x = tau^2 (d = (F + G)/x: at a small
+ * contact one LSB of F spans 1/x LSB of d); held by a machine, times
+ * (1 + kappa)/(1 + kappa x) (the solver's control z 2^sz/(1 + kappa),
+ * Q2.29 of D0, resolves the depth term of z 2^sz = (1 + kappa x) d -
+ * kappa G to 1 + kappa LSB) */
+#define FZ_Q31_BAND_LSB 64.0
+#define FZ_Q31_CTL_LSB 8.0
+static inline void fz_scene_step_q31(mdr_scene_q31 *s, int ctl, int32_t v)
+{
+    const mdr_scene_q31 before = *s;
+    mdr_step_q31 o, o0;
+    mdr_status st;
+    memset(&o, 0x5a, sizeof o);
+    o0 = o;
+    st = ctl == FZ_D ? mdr_scene_step_d_q31(s, v, &o)
+         : ctl == FZ_F ? mdr_scene_step_F_q31(s, v, &o)
+                       : mdr_scene_step_z_q31(s, v, &o);
+    fz_status(st);
+    FZ_CHECK(st != MDR_E_NOCONV);
+    if (v > 2 * MDR_Q29_ONE || v < -2 * MDR_Q29_ONE) {
+        FZ_CHECK(st != MDR_OK || (s->flags & MDR_FLAG_SAT));
+    }
+    if (st != MDR_OK) {
+        mdr_scene_q31 x = *s;
+        x.flags = before.flags;
+        FZ_CHECK(memcmp(&x, &before, sizeof x) == 0);
+        FZ_CHECK(memcmp(&o, &o0, sizeof o) == 0);
+        if (st == MDR_E_OUTSIDE) {
+            double gL = s->gc / 1073741824.0;
+            fz_q31_beyond(ctl, v, gL - s->c_adv / 536870912.0, gL / (s->n + 1), s->machine, s->al_z, s->sz);
+        }
+        return;
+    }
+    FZ_CHECK(o.d == s->d && o.F == s->F);
+    FZ_CHECK(s->tau >= 0 && s->tau <= MDR_Q30_ONE && o.a >= 0 && o.a <= MDR_Q30_ONE);
+    FZ_CHECK(s->contact || (s->tau == 0 && s->F == 0 && o.a == 0));
+    if (s->contact && !(s->flags & MDR_FLAG_SAT)) {
+        double t = s->tau / 1073741824.0, g = s->gc / 1073741824.0 * pow(t, 2.0 * s->n);
+        double cw = s->c_w / 536870912.0 * t, ca = s->c_adv / 536870912.0 * t, d = s->d / 536870912.0;
+        double tol = FZ_Q31_BAND_LSB / 536870912.0 + (g + cw + fabs(d)) / 4194304.0 +
+                     (s->mode == MDR_CONTROL_LOAD ? FZ_Q31_CTL_LSB / 536870912.0 / (t * t) : 0.0);
+        if (s->mode == MDR_CONTROL_MACHINE) {
+            const double kap = 1073741824.0 / s->al_z - 1.0;
+            tol += FZ_Q31_CTL_LSB / 536870912.0 * (1.0 + kap) / (1.0 + kap * t * t);
+        }
+        FZ_CHECK(d >= g - cw - tol && d <= g - ca + tol);
+    }
+}
+#endif
 
 #endif /* FUZZ_H */

@@ -11,7 +11,9 @@
  * (NaN, inf). The three engines take the same physical input; every step is
  * checked as fuzz.h describes. Where the profile is a monomial (paraboloid,
  * cone, integer power law) the f64 and f32 table-free scenes take the same
- * inputs (all outputs, energy kept; fz_scene_step).
+ * inputs (all outputs, energy kept; fz_scene_step), and the q31 scene made
+ * from the f64 one with a_max = x_max takes the same raw q31 values (in its
+ * own units; fz_scene_step_q31).
  */
 #include "fuzz.h"
 
@@ -45,9 +47,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mdr_engine_q31 eq;
     mdr_scene_f64 s64;
     mdr_scene_f32 s32;
+    mdr_scene_q31 sq;
     mdr_energy_f64 en64;
     mdr_energy_f32 en32;
-    int ok32, okq, ops, oks64, oks32;
+    int ok32, okq, ops, oks64, oks32, oksq;
     switch (kind) {
     case MDR_PROFILE_CONE:
         p[0] = 0.01 + 1.55 * u;
@@ -88,6 +91,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     oks64 = mdr_scene_init_contact_f64(&s64, &c64, w_adv, k_m, MDR_OUT_ALL, &en64) == MDR_OK;
     oks32 = ok32 && mdr_scene_init_contact_f32(&s32, &c32, (float)w_adv, (float)k_m, MDR_OUT_ALL, &en32) == MDR_OK;
+    oksq = oks64 && mdr_scene_init_q31_f64(&sq, &s64, x_max) == MDR_OK;
     okq = mdr_table_q31_from_f64(&tq, nq, &t64) == MDR_OK &&
           mdr_engine_init_q31_f64(&eq, &tq, E, w, w_adv, k_m) == MDR_OK;
 #ifdef FZ_DEBUG
@@ -127,6 +131,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             mdr_engine_clear_flags_q31(&eq);
             s64.flags = 0;
             s32.flags = 0;
+            (void)mdr_scene_clear_flags_q31(&sq);
             continue;
         }
         {
@@ -152,6 +157,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (okq && !(op & 0x80u)) {
             mdr_step_q31 o;
             fz_step_q31(&eq, ctl, raw, &o);
+        }
+        if (oksq && !(op & 0x80u)) {
+            fz_scene_step_q31(&sq, ctl, raw);
         }
     }
     return 0;
