@@ -365,6 +365,31 @@ static void scene_errors(void **state)
 }
 
 
+/* z = d + F/k_m of a scene's outputs where F/k_m is finite but F iFs kap
+ * (the order the scene once multiplied in) passes the largest float: a
+ * paraboloid under a soft machine (k_m = 1e-9 N/m) at F = 1e25 N (a ~ 20 km:
+ * the scene has no range to leave): accepted, z finite and within 4 eps of
+ * d + F/k_m in double (found by fuzz_step: z was +inf with MDR_OK); the same
+ * F on an f32 scene whose z is beyond float refuses (MDR_E_OVERFLOW),
+ * unchanged. */
+static void scene_z_range(void **state)
+{
+    mdr_scene_f32 s, k;
+    mdr_step_f32 o;
+    (void)state;
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.025f, 1e-9f, MDR_OUT_ALL, NULL),
+                     MDR_OK);
+    assert_int_equal(mdr_scene_step_F_f32(&s, 1e25f, &o), MDR_OK);
+    assert_true(isfinite(o.z));
+    rel_le((double)o.z, (double)o.d + 1e25 / 1e-9, 0, 4 * FLT_EPSILON, "scene f32 z at F = 1e25 N");
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.025f, 1e-12f, MDR_OUT_ALL, NULL),
+                     MDR_OK);
+    assert_int_equal(mdr_scene_step_F_f32(&s, 1e25f, &o), MDR_OK);
+    k = s;
+    assert_int_equal(mdr_scene_step_F_f32(&s, 1e30f, &o), MDR_E_OVERFLOW); /* z = 1e42 m */
+    assert_memory_equal(&s, &k, sizeof s);
+}
+
 #if MDR_CFG_Q31
 /* One cycle of the q31 scene against the f64 scene it was made from, at
  * the same raw control: the worst error in LSB of Q2.29 and relative to
@@ -592,31 +617,6 @@ static void scene_q31_stiff_top(void **state)
            pinned, moved, worst, TOL_Q31_STEP);
     assert_true(pinned >= 5 && moved > 100);
     assert_true(worst <= TOL_Q31_STEP);
-}
-
-/* z = d + F/k_m of a scene's outputs where F/k_m is finite but F iFs kap
- * (the order the scene once multiplied in) passes the largest float: a
- * paraboloid under a soft machine (k_m = 1e-9 N/m) at F = 1e25 N (a ~ 20 km:
- * the scene has no range to leave): accepted, z finite and within 4 eps of
- * d + F/k_m in double (found by fuzz_step: z was +inf with MDR_OK); the same
- * F on an f32 scene whose z is beyond float refuses (MDR_E_OVERFLOW),
- * unchanged. */
-static void scene_z_range(void **state)
-{
-    mdr_scene_f32 s, k;
-    mdr_step_f32 o;
-    (void)state;
-    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.025f, 1e-9f, MDR_OUT_ALL, NULL),
-                     MDR_OK);
-    assert_int_equal(mdr_scene_step_F_f32(&s, 1e25f, &o), MDR_OK);
-    assert_true(isfinite(o.z));
-    rel_le((double)o.z, (double)o.d + 1e25 / 1e-9, 0, 4 * FLT_EPSILON, "scene f32 z at F = 1e25 N");
-    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.025f, 1e-12f, MDR_OUT_ALL, NULL),
-                     MDR_OK);
-    assert_int_equal(mdr_scene_step_F_f32(&s, 1e25f, &o), MDR_OK);
-    k = s;
-    assert_int_equal(mdr_scene_step_F_f32(&s, 1e30f, &o), MDR_E_OVERFLOW); /* z = 1e42 m */
-    assert_memory_equal(&s, &k, sizeof s);
 }
 
 /* bad input: named errors, the scene unchanged; saturation flagged */
