@@ -620,6 +620,39 @@ static void scene_q31_stiff_top(void **state)
 }
 
 /* bad input: named errors, the scene unchanged; saturation flagged */
+/* A load's pull-off at a fold whose radius is below the resolution of x
+ * (found by fuzz_step): a cone with very little adhesion (w = 1e-6 J/m^2
+ * at E* = 5e11 Pa: the load's fold at a ~ 1e-12 L, x = a/L = 0 in Q1.30)
+ * touched by a depth of 514 raw LSB, then pulled by a load of -1.73 F0.
+ * The fold's depth u/x + g/(n+1) then divided by x = 0 (undefined: a
+ * zero passed to the leading-zero count). The tick must be a pull-off to
+ * separation as in the f64 scene at the same inputs. */
+static void scene_q31_load_fold_unresolved(void **state)
+{
+    mdr_contact_f64 c;
+    mdr_scene_f64 s;
+    mdr_scene_q31 q;
+    mdr_step_f64 o;
+    mdr_step_q31 oq;
+    const double p[3] = {0.78196078431372551, 0, 0};
+    (void)state;
+    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_CONE, p, 521971822043.56415, 1e-6), MDR_OK);
+    assert_int_equal(mdr_scene_init_contact_f64(&s, &c, 2.1176470588235293e-07, 35776054287.813957, MDR_OUT_ALL, NULL),
+                     MDR_OK);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 0.78636642643426413), MDR_OK);
+    assert_int_equal(mdr_scene_step_d_q31(&q, 514, &oq), MDR_OK);
+    assert_int_equal(q.contact, 1);
+    assert_int_equal(mdr_scene_step_d_f64(&s, 514 * (q.D0 / 536870912.0), &o), MDR_OK);
+    assert_int_equal(s.contact, 1);
+    assert_int_equal(mdr_scene_step_F_q31(&q, -931109738, &oq), MDR_OK);
+    assert_int_equal(mdr_scene_step_F_f64(&s, -931109738 * (q.F0 / 536870912.0), &o), MDR_OK);
+    printf("  q31 scene, a load's pull-off below the resolution of x: event %d (f64 %d), contact %d\n", (int)oq.event,
+           (int)o.event, (int)q.contact);
+    assert_int_equal(oq.event, o.event);
+    assert_int_equal(q.contact, 0);
+    assert_int_equal(s.contact, 0);
+}
+
 static void scene_q31_errors(void **state)
 {
     mdr_scene_f64 s;
@@ -741,6 +774,7 @@ int main(void)
         cmocka_unit_test(scene_q31_vs_f64),
         cmocka_unit_test(scene_q31_any_step),
         cmocka_unit_test(scene_q31_stiff_top),
+        cmocka_unit_test(scene_q31_load_fold_unresolved),
         cmocka_unit_test(scene_q31_errors),
 #endif
     };
