@@ -455,14 +455,12 @@ static double q31_cycle(uint8_t kind, double p0, double p1, int ctl, double k_m)
     return worst;
 }
 
-/* whole cycles of three monomials under each control against f64 */
-static void scene_q31_vs_f64(void **state)
+/* every monomial (paraboloid, cone, power laws n = 3 and n = 8, the
+ * steepest: the int64 headroom of U' and U'') under every control, the
+ * machine soft and stiff: the worst of run over them (its LSB); a cycle
+ * under fixed grips within TOL_Q31_GRIPS where grips_tol */
+static double q31_each(double (*run)(uint8_t, double, double, int, double), int grips_tol)
 {
-    double worst = 0;
-    (void)state;
-    /* every monomial (paraboloid, cone, power laws n = 3 and n = 8, the
-     * steepest: the int64 headroom of U' and U'') under every control, the
-     * machine soft and stiff */
     static const struct {
         uint8_t kind;
         double p0, p1;
@@ -470,16 +468,27 @@ static void scene_q31_vs_f64(void **state)
                  {MDR_PROFILE_CONE, 0.3, 0},
                  {MDR_PROFILE_POWERLAW, 1e12, 3},
                  {MDR_PROFILE_POWERLAW, 1e42, MDR_POWERLAW_N_MAX}};
+    double worst = 0;
     int j, ctl;
     for (j = 0; j < 4; j++) {
         for (ctl = 1; ctl <= 3; ctl++) {
-            const double w = q31_cycle(prof[j].kind, prof[j].p0, prof[j].p1, ctl, ctl == 3 ? 0.5 : 0.0);
-            printf("  q31 scene profile %d control %d: %.1f LSB\n", prof[j].kind, ctl, w);
-            assert_true(ctl != MDR_CONTROL_GRIPS || w <= TOL_Q31_GRIPS);
+            const double w = run(prof[j].kind, prof[j].p0, prof[j].p1, ctl, ctl == 3 ? 0.5 : 0.0);
+            if (grips_tol) {
+                printf("  q31 scene profile %d control %d: %.1f LSB\n", prof[j].kind, ctl, w);
+                assert_true(ctl != MDR_CONTROL_GRIPS || w <= TOL_Q31_GRIPS);
+            }
             worst = fmax(worst, w);
         }
-        worst = fmax(worst, q31_cycle(prof[j].kind, prof[j].p0, prof[j].p1, MDR_CONTROL_MACHINE, 20.0));
+        worst = fmax(worst, run(prof[j].kind, prof[j].p0, prof[j].p1, MDR_CONTROL_MACHINE, 20.0));
     }
+    return worst;
+}
+
+/* whole cycles of four monomials under each control against f64 */
+static void scene_q31_vs_f64(void **state)
+{
+    double worst = q31_each(q31_cycle, 1);
+    (void)state;
     printf("  q31 scene against f64: worst %.1f LSB (tolerance %.0f)\n", worst, TOL_Q31_LSB);
     assert_true(worst <= TOL_Q31_LSB);
 }
@@ -545,22 +554,8 @@ static double q31_any_step(uint8_t kind, double p0, double p1, int ctl, double k
 
 static void scene_q31_any_step(void **state)
 {
-    static const struct {
-        uint8_t kind;
-        double p0, p1;
-    } prof[4] = {{MDR_PROFILE_PARABOLOID, 1e-6, 0},
-                 {MDR_PROFILE_CONE, 0.3, 0},
-                 {MDR_PROFILE_POWERLAW, 1e12, 3},
-                 {MDR_PROFILE_POWERLAW, 1e42, MDR_POWERLAW_N_MAX}};
-    double worst = 0;
-    int j, ctl;
+    double worst = q31_each(q31_any_step, 0);
     (void)state;
-    for (j = 0; j < 4; j++) {
-        for (ctl = 1; ctl <= 3; ctl++) {
-            worst = fmax(worst, q31_any_step(prof[j].kind, prof[j].p0, prof[j].p1, ctl, ctl == 3 ? 0.5 : 0.0));
-        }
-        worst = fmax(worst, q31_any_step(prof[j].kind, prof[j].p0, prof[j].p1, MDR_CONTROL_MACHINE, 20.0));
-    }
     printf("  q31 scene, single ticks of any size against f64: worst %.1f LSB (tolerance %.0f)\n", worst,
            TOL_Q31_STEP);
     assert_true(worst <= TOL_Q31_STEP);
