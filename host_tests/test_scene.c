@@ -614,7 +614,6 @@ static void scene_q31_stiff_top(void **state)
     assert_true(worst <= TOL_Q31_STEP);
 }
 
-/* bad input: named errors, the scene unchanged; saturation flagged */
 /* A load's pull-off at a fold whose radius is below the resolution of x
  * (found by fuzz_step): a cone with very little adhesion (w = 1e-6 J/m^2
  * at E* = 5e11 Pa: the load's fold at a ~ 1e-12 L, x = a/L = 0 in Q1.30)
@@ -648,6 +647,7 @@ static void scene_q31_load_fold_unresolved(void **state)
     assert_int_equal(s.contact, 0);
 }
 
+/* bad input: named errors, the scene unchanged; saturation flagged */
 static void scene_q31_errors(void **state)
 {
     mdr_scene_f64 s;
