@@ -86,7 +86,9 @@ typedef struct {
     double kF, F0;     /**< and F = kF u + F0 */
     double s_lo, s_hi; /**< the solver's edge coordinate per unit of u along the receding
                            (u < u_lo) and the advancing branch (u > u_hi) at the edge: the
-                           first step of the next move; 0 where there is none (a fold) */
+                           first step of the next move; 0 where there is none (a fold). A
+                           scene keeps, after a move, the other branch's slope at an earlier
+                           edge: only a start for Newton */
 } mdr_pinned_f64;
 
 /** The engine: material, control constants and the contact state.

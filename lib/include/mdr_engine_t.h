@@ -68,7 +68,9 @@ typedef struct {
     MDR_T kF, F0;     /**< and F = kF u + F0 */
     MDR_T s_lo, s_hi; /**< the solver's edge coordinate per unit of u along the receding
                            (u < u_lo) and the advancing branch (u > u_hi) at the edge: the
-                           first step of the next move; 0 where there is none (a fold) */
+                           first step of the next move; 0 where there is none (a fold). A
+                           scene keeps, after a move, the other branch's slope at an earlier
+                           edge: only a start for Newton */
 } MDR_SFX(mdr_pinned);
 
 /** The engine: material, control constants and the contact state.

@@ -65,6 +65,8 @@ typedef struct {
     float uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     float nu;      /**< n/(n+1) */
     float in1;     /**< 1/(n+1) */
+    float bD, bF;  /**< (gw - ga) D_s, (gw - ga) F_s: the pinned band's width per tau [m], [N] */
+    float GD, GF;  /**< D_s/(n+1), F_s/(n+1): G's scale [m], [N] */
     float tau;     /**< edge: sqrt(a/a_s); 0 when separated */
     float d, F;    /**< indentation [m], force [N] after the last step */
     mdr_pinned_f32 pin; /**< the pinned edge for control mode `mode` (mdr_engine_t.h) */

@@ -65,6 +65,8 @@ typedef struct {
     double uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     double nu;      /**< n/(n+1) */
     double in1;     /**< 1/(n+1) */
+    double bD, bF;  /**< (gw - ga) D_s, (gw - ga) F_s: the pinned band's width per tau [m], [N] */
+    double GD, GF;  /**< D_s/(n+1), F_s/(n+1): G's scale [m], [N] */
     double tau;     /**< edge: sqrt(a/a_s); 0 when separated */
     double d, F;    /**< indentation [m], force [N] after the last step */
     mdr_pinned_f64 pin; /**< the pinned edge for control mode `mode` (mdr_engine_t.h) */

@@ -47,6 +47,8 @@ typedef struct {
     MDR_T uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     MDR_T nu;      /**< n/(n+1) */
     MDR_T in1;     /**< 1/(n+1) */
+    MDR_T bD, bF;  /**< (gw - ga) D_s, (gw - ga) F_s: the pinned band's width per tau [m], [N] */
+    MDR_T GD, GF;  /**< D_s/(n+1), F_s/(n+1): G's scale [m], [N] */
     MDR_T tau;     /**< edge: sqrt(a/a_s); 0 when separated */
     MDR_T d, F;    /**< indentation [m], force [N] after the last step */
     MDR_SFX(mdr_pinned) pin; /**< the pinned edge for control mode `mode` (mdr_engine_t.h) */
