@@ -32,7 +32,7 @@
  *
  * --curve prints one JSON object: E w z0 F_base E_err w_err z0_err
  * F_base_err mu R_mu z_e regime rms pull_off_F pull_off_z a_pull_off n
- * method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
+ * n_pinned method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
  * A fit that fails prints {"status": ..., "message": ...} and exits 1.
  * --map prints CSV curve,E,w,z0,F_base,mu,rms,status, one row per curve in
  * the input's order (status "ok" or the library's status name; the other
@@ -62,7 +62,7 @@ typedef struct {
     mdr_status st;
     double E, w, z0, F_base, E_err, w_err, z0_err, F_base_err, rms, pull_off_F, pull_off_z, a_pull_off;
     double mu, R_mu, w_adv, w_adv_err;
-    uint32_t n, n_approach;
+    uint32_t n, n_approach, n_pinned;
     uint16_t iterations;
     uint8_t regime, method;
 } fit_res;
@@ -523,6 +523,8 @@ static int fit_curve_cmd(const struct fit_args *A)
     }
     json_key(&j, "n");
     printf("%lu", (unsigned long)c.res.n);
+    json_key(&j, "n_pinned");
+    printf("%lu", (unsigned long)c.res.n_pinned);
     json_str(&j, "method", c.res.method == MDR_FIT_FULL ? "full" : "two-point");
     json_key(&j, "iterations");
     printf("%u", (unsigned)c.res.iterations);

@@ -70,6 +70,7 @@ static mdr_status FIT_SFX(fit_run)(const struct fit_args *A, const double *z, co
     o->w_adv_err = (double)r.w_adv_err;
     o->n = r.n;
     o->n_approach = r.n_approach;
+    o->n_pinned = r.n_pinned;
     o->iterations = r.iterations;
     o->regime = r.regime;
     o->method = r.method;

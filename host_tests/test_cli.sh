@@ -274,7 +274,7 @@ sys.exit(0 if eval(sys.argv[1]) else 1)' "$2" 2>/dev/null && ok || bad "json: $2
 }
 # every quantity of the object (a number that is not a count) and of its
 # input has a unit
-COUNTS='{"events", "cycles", "jumps", "springs", "steps_per_segment", "n", "points", "status_code", "iterations", "n_approach"}'
+COUNTS='{"events", "cycles", "jumps", "springs", "steps_per_segment", "n", "points", "status_code", "iterations", "n_approach", "n_pinned"}'
 has_units() {
     jcheck "$1" "all(k in j['units'] for o in (j, j['input']) for k, v in o.items() if isinstance(v, float) or (isinstance(v, int) and not isinstance(v, bool) and k not in $COUNTS))"
 }

@@ -42,7 +42,11 @@
  *     TOL_TP_GRID = 0.5: two-point on 300 uniform samples, a first guess:
  *     it takes the last contact sample for the fold, whose force differs
  *     from the fold's by O(sqrt(step)) (measured worst 0.21 in E*);
- *   TOL_MU = 1e-13: the Tabor parameter against its formula.
+ *   TOL_MU = 1e-13: the Tabor parameter against its formula;
+ *   pinned top (w_adv < w): TOL_RT on noise-free closed-form curves whose
+ *     retract starts pinned (the fit leaves that part out; n_pinned the
+ *     samples above the pinned part's end, or one more where the first
+ *     receding sample lies on the pinned line within the rounding).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -515,6 +519,76 @@ static void test_approach(void **state)
     print_message("approach w_adv round trip: worst %.2g\n", worst);
 }
 
+/* ---- a pinned top ------------------------------------------------------- */
+
+/* A retract after an approach with w_adv < w (closed forms, libm): the top
+ * at radius at on the approach branch (JKR with w_adv), then pinned at at
+ * (F = F_t + 2E* at (d - d_t): a flat punch of radius at, seed 4.16) down
+ * to where the receding branch (w) has the radius at, then that branch to
+ * the fold and free below. n samples uniform in z'; returns the samples
+ * above the pinned part's end in *npin and the last contact index. */
+static int pinned_curve(const jkr_par *p, double wadv, double at, double z0, double Fb, int n, double *z,
+                        double *F, int *npin, double *Fpo)
+{
+    jkr_par pa = *p;
+    double af = jkr_fold(p), Ff, zf = jkr_z(p, af, &Ff, NULL), Ft, zt, dt, zpin, k2 = 2 * p->E * at, ztop, zbot;
+    int i, last = -1;
+    pa.w = wadv;
+    zt = jkr_z(&pa, at, &Ft, NULL);
+    dt = zt - Ft / p->km;
+    zpin = jkr_z(p, at, NULL, NULL); /* the receding branch at radius at */
+    ztop = zt;
+    zbot = zf - 0.4 * (ztop - zf);
+    *npin = 0;
+    for (i = 0; i < n; i++) {
+        double zp = ztop + (zbot - ztop) * i / (n - 1), f = 0.0;
+        if (zp > zpin) {
+            /* z' = d + (F_t + k2 (d - d_t))/k_m */
+            double d = (zp - (Ft - k2 * dt) / p->km) / (1 + k2 / p->km);
+            f = Ft + k2 * (d - dt);
+            (*npin)++;
+            last = i;
+        } else if (zp > zf) {
+            jkr_z(p, jkr_a(p, zp, af), &f, NULL);
+            last = i;
+        }
+        z[i] = zp + z0;
+        F[i] = f + Fb;
+    }
+    *Fpo = Ff;
+    return last;
+}
+
+static void test_pinned_top(void **state)
+{
+    static const double ratios[3] = {0.0, 0.3, 0.7}, tops[3] = {1.5, 2.5, 4.0};
+    const jkr_par *p = &regimes[1];
+    int k, t;
+    (void)state;
+    worst = 0;
+    for (k = 0; k < 3; k++) {
+        for (t = 0; t < 3; t++) {
+            mdr_contact_f64 c = paraboloid64(p->R);
+            mdr_fit_opts_f64 o;
+            mdr_fit_result_f64 r;
+            double z0 = 5e-9, Fb = 1e-11, Fpo;
+            int npin, n = NPROF, last = pinned_curve(p, ratios[k] * p->w, tops[t] * jkr_fold(p), z0, Fb, n, zs, Fs,
+                                                     &npin, &Fpo);
+            char what[96];
+            snprintf(what, sizeof what, "pinned top, w_adv/w %.1f, a_t/a_fold %.1f", ratios[k], tops[t]);
+            assert_true(npin > 0 && last > npin);
+            mdr_fit_defaults_f64(&o, p->km);
+            assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r), MDR_OK);
+            check_fit64(&r, p->E, p->w, z0, Fb, zs[0] - zs[last], fabs(Fpo), TOL_RT, what);
+            if (!((int)r.n_pinned == npin || (int)r.n_pinned == npin + 1)) {
+                fail_msg("%s: n_pinned %u, the curve's %d", what, (unsigned)r.n_pinned, npin);
+            }
+            assert_int_equal(r.n, (uint32_t)n - r.n_pinned);
+        }
+    }
+    print_message("pinned top round trip: worst %.2g\n", worst);
+}
+
 /* ---- the regime ----------------------------------------------------------------- */
 
 static void test_tabor(void **state)
@@ -733,6 +807,7 @@ int main(void)
         cmocka_unit_test(test_roundtrip_profiles),
         cmocka_unit_test(test_roundtrip_f32),
         cmocka_unit_test(test_noise),
+        cmocka_unit_test(test_pinned_top),
         cmocka_unit_test(test_two_point),
         cmocka_unit_test(test_approach),
         cmocka_unit_test(test_tabor),

@@ -22,8 +22,11 @@
  * then jumps off to F = 0. On the approach (work of adhesion w_adv) the tip
  * touches at z' = 0 and (w_adv > 0) jumps in to the stable branch. The
  * measured force is the model's plus a baseline: F_i = F_model(z_i - z0) +
- * F_b. The retract is assumed to start on the receding equilibrium (no
- * pinned part at its top: w_adv = w, or the pinned part not in the data).
+ * F_b. A retract that starts pinned (w_adv < w: the contact radius held at
+ * the approach's largest while the force falls along a straight line, until
+ * it meets the receding branch) is fitted from below that part, which the
+ * fit finds and leaves out (n_pinned; docs/fitting.md says how, and what it
+ * cannot find: a retract pinned all the way to its rupture).
  *
  * Not fitted by this model: profiles whose retract jumps to a smaller
  * stable contact before the pull-off (the wavy profile where it does:
@@ -68,6 +71,9 @@ typedef struct {
     MDR_T w_adv_err;  /**< its standard error [J/m^2] */
     uint32_t n;          /**< retract points used */
     uint32_t n_approach; /**< approach points used for w_adv (0: not fitted) */
+    uint32_t n_pinned;   /**< samples at the top of the retract left out as its pinned
+                              part (w_adv < w: the contact radius held until the force
+                              meets the receding branch; mdr_fit_curve_<type>()) */
     uint16_t iterations; /**< Levenberg-Marquardt iterations (0 for two-point) */
     uint8_t method;      /**< MDR_FIT_FULL or MDR_FIT_TWO_POINT */
     uint8_t regime;      /**< MDR_REGIME_JKR, _TRANSITION or _DMT */
@@ -119,7 +125,8 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  *   when it is fitted), MDR_E_NOCONTACT (no retract force above the baseline
  *   by more than the noise), MDR_E_NOPULLOFF (the curve never separates: no
  *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);
- *   fits that fail: MDR_E_FITCAP (iteration cap), MDR_E_DEGENERATE (the
+ *   fits that fail: MDR_E_FITCAP (iteration cap, or a pinned top's end not
+ *   settled in 8 refits), MDR_E_DEGENERATE (the
  *   data do not determine the four parameters, or the two-point equations
  *   have no solution), MDR_E_JUMPS (the retract jumps before the pull-off),
  *   MDR_E_RADIUS (the indentation needs a contact beyond the profile's

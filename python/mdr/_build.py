@@ -98,7 +98,7 @@ STRUCTS = {
     "mdrpy_info": [("double", f) for f in ("a", "d", "F", "dissipated", "last_cycle", "a_max", "L", "D0", "F0", "Z0")]
     + [("uint32_t", "cycles"), ("uint16_t", "springs"), ("uint8_t", "contact"), ("uint8_t", "flags")],
     "mdrpy_fit_res": [("double", f) for f in FIT_DOUBLES]
-    + [("uint32_t", "n"), ("uint32_t", "n_approach"), ("uint16_t", "iterations"), ("uint8_t", "method"),
+    + [("uint32_t", "n"), ("uint32_t", "n_approach"), ("uint32_t", "n_pinned"), ("uint16_t", "iterations"), ("uint8_t", "method"),
        ("uint8_t", "regime")],
 }
 STRUCTS_T = {

@@ -24,7 +24,8 @@ class FitResult:
     mu), z_e [m], regime ("JKR", "transition", "DMT"), rms [N] (residual),
     pull_off_F [N] (the model's pull-off force relative to the baseline,
     negative), pull_off_z [m], a_pull_off [m] (contact radius at pull-off),
-    n (retract points used), method ("full", "two-point"), iterations
+    n (retract points used), n_pinned (samples at the top of the retract
+    left out as its pinned part: w_adv < w), method ("full", "two-point"), iterations
     (Levenberg-Marquardt; 0 for two-point), arith; with approach=True also
     w_adv, w_adv_err [J/m^2] and n_approach (else w_adv is None).
     contact: the profile fitted (an mdr.Contact with the fitted E*, w);
@@ -43,7 +44,7 @@ class FitResult:
                 "rms", "pull_off_F", "pull_off_z", "a_pull_off"]
         if self.n_approach:
             keys += ["w_adv", "w_adv_err", "n_approach"]
-        keys += ["n", "method", "iterations", "arith"]
+        keys += ["n", "n_pinned", "method", "iterations", "arith"]
         return {k: getattr(self, k) for k in keys}
 
     def model(self):
@@ -142,7 +143,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     if not res.n_approach:
         out["w_adv"] = out["w_adv_err"] = None
     fitted = tip.replace(E=out["E"], w=out["w"])
-    return FitResult(**out, n=int(res.n), n_approach=int(res.n_approach), iterations=int(res.iterations),
+    return FitResult(**out, n=int(res.n), n_approach=int(res.n_approach), n_pinned=int(res.n_pinned), iterations=int(res.iterations),
                      method=_METHOD_NAMES[res.method], regime=ffi.string(lib.mdr_regime_str(res.regime)).decode(),
                      z_e=float(ze), arith=arith, k_machine=float(k), contact=fitted, z=z, F=F, _tip=tip, _z=z,
                      _res=res)

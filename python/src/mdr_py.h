@@ -104,6 +104,7 @@ typedef struct {
     double mu, R_mu;                         /**< Tabor parameter [1], its radius [m] */
     double w_adv, w_adv_err;                 /**< approach (n_approach > 0) [J/m^2] */
     uint32_t n, n_approach;                  /**< points used */
+    uint32_t n_pinned;                       /**< retract samples left out as its pinned top */
     uint16_t iterations;                     /**< Levenberg-Marquardt iterations */
     uint8_t method, regime;                  /**< MDR_FIT_*, MDR_REGIME_* */
 } mdrpy_fit_res;
