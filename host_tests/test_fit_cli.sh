@@ -56,6 +56,14 @@ for wadv in 0.025; do
     near "$(key "$out" w)" 0.05 1e-7 && ok || bad "pinned top (w_adv $wadv): w: $out"
     [ "$(key "$out" n_pinned)" -gt 0 ] && ok || bad "pinned top (w_adv $wadv): n_pinned: $out"
 done
+# pinned to the rupture (w_adv = 0: the contact holds the approach's radius
+# until it lets go): a line and its end do not determine E* and w, so the
+# fit refuses, exit 1 with status MDR_E_PINNED (before: E* 22 % high, ok)
+"$MDR" cycle $TIP --E 1e9 --w 0.05 --control machine --k-machine 0.2 --path -1e-8,2e-8,-4e-8 \
+    --steps-per-segment 1000 --w-adv 0 --arith f64 --springs 1024 2>/dev/null |
+    awk -F, 'NR > 1 { printf "%.17g,%.17g\n", $2, $4 }' > "$TMP/r.csv"
+rout=$("$MDR" fit --curve "$TMP/r.csv" $TIP --k-machine 0.2)
+[ $? -eq 1 ] && [ "$(key "$rout" status)" = '"MDR_E_PINNED"' ] && ok || bad "pinned to the rupture: $rout"
 # mu = (R w^2/(E^2 z_e^3))^(1/3) with the default z_e = 0.3 nm, and with --z-e
 near "$(key "$out" mu)" 1.2280104994532326 1e-3 && ok || bad "mu: $out"
 out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --z-e 0.15e-9) || bad "--z-e exit"

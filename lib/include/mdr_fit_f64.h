@@ -147,6 +147,9 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   settled in 8 refits), MDR_E_DEGENERATE (the
  *   data do not determine the four parameters, or the two-point equations
  *   have no solution), MDR_E_JUMPS (the retract jumps before the pull-off),
+ *   MDR_E_PINNED (the full fit only: the retract straight to its pull-off
+ *   and a line explains it better than the receding branch: a contact
+ *   pinned until it ruptures, docs/fitting.md),
  *   MDR_E_RADIUS (the indentation needs a contact beyond the profile's
  *   domain, e.g. a >= R of the sphere), MDR_E_NOCONV, MDR_E_OVERFLOW (from
  *   the contact module).

@@ -83,6 +83,11 @@ typedef int8_t mdr_status;
 /** Fit: the model's retract jumps to a smaller stable contact before the
  *  pull-off (wavy profiles): the one-branch model does not apply. */
 #define MDR_E_JUMPS (-21)
+/** Fit: the retract's contact part is straight down to its pull-off, and a
+ *  straight line explains it better than the receding branch: a contact
+ *  pinned at one radius until it ruptures (w_adv < w), which does not
+ *  determine E* and w, or a pinned top the noise hides. */
+#define MDR_E_PINNED (-22)
 
 /** Profile kinds (uint8_t values; the meaning of p[0..2] for each). */
 #define MDR_PROFILE_PARABOLOID 1u /**< f = r^2/(2R);          p = {R}            */

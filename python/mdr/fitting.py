@@ -104,7 +104,8 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     MDR_E_NOPULLOFF (never separates), MDR_E_ORDER (z increases within the
     retract), MDR_E_NONFINITE (a NaN or inf sample, .index its position),
     MDR_E_PARAM (k_machine, z_e, E0/w0), MDR_E_KIND (flat punch),
-    MDR_E_FITCAP, MDR_E_DEGENERATE, MDR_E_JUMPS, MDR_E_RADIUS, ...
+    MDR_E_FITCAP, MDR_E_DEGENERATE, MDR_E_JUMPS, MDR_E_PINNED (a retract
+    straight to its pull-off: pinned until it ruptures), MDR_E_RADIUS, ...
     """
     if arith not in ("f32", "f64"):
         raise ValueError("fit: arith must be 'f32' or 'f64', not %r" % (arith,))

@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""fit_pinned_matrix.py: the fit of noisy retracts with a pinned top, the
+figures of docs/fitting.md ("Adhesion hysteresis"). Engine cycles (`mdr
+cycle`, paraboloid R 20 nm, E* 1 GPa, w 0.05, machine control, path -10 ->
+20 -> -40 nm, 1000 steps per segment, 1024 springs, f64), Gaussian noise of
+0, 0.1 %, 1 % and 3 % of the pull-off force on F (8 copies, seed 1), each
+fitted with `mdr fit`; per row the status or E*/E and, in parentheses, its
+distance from the truth in reported standard errors.
+Usage: python3 host_tests/fit_pinned_matrix.py [build/host/mdr]  (~1 min)"""
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+MDR = sys.argv[1] if len(sys.argv) > 1 else "build/host/mdr"
+
+
+def cycle(wadv, km):
+    out = subprocess.run([MDR, "cycle", "--profile", "paraboloid", "--R", "20e-9", "--E", "1e9", "--w", "0.05",
+                          "--w-adv", str(wadv), "--control", "machine", "--k-machine", str(km), "--path",
+                          "-1e-8,2e-8,-4e-8", "--steps-per-segment", "1000", "--springs", "1024", "--arith", "f64"],
+                         capture_output=True, text=True, check=True).stdout
+    rows = [line.split(",") for line in out.splitlines()[1:] if line[:1].isdigit()]
+    return [float(r[1]) for r in rows], [float(r[3]) for r in rows]
+
+
+def fit(path, z, F, km):
+    with open(path, "w") as f:
+        f.write("z,F\n")
+        for a, b in zip(z, F):
+            f.write("%r,%r\n" % (a, b))
+    r = json.loads(subprocess.run([MDR, "fit", "--curve", path, "--profile", "paraboloid", "--R", "20e-9",
+                                   "--k-machine", str(km)], capture_output=True, text=True).stdout)
+    if r["status"] != "ok":
+        return r["status"].replace("MDR_E_", "")
+    return "%.2f(%.1f)" % (r["E"] / 1e9, (r["E"] - 1e9) / r["E_err"])
+
+
+def main():
+    random.seed(1)
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "c.csv")
+        for wadv in (0.0, 0.025, 0.05):
+            for km in (0.2, 2.0):
+                z, F = cycle(wadv, km)
+                fpo = abs(min(F))
+                for rel in (0.0, 0.001, 0.01, 0.03):
+                    res = [fit(path, z, [f + rel * fpo * random.gauss(0, 1) for f in F], km)
+                           for _ in range(1 if rel == 0 else 8)]
+                    print("w_adv %.3f k_m %.1f noise %5.1f %%: %s" % (wadv, km, 100 * rel, " ".join(res)), flush=True)
+
+
+if __name__ == "__main__":
+    main()
