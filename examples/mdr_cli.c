@@ -666,7 +666,7 @@ static const char *const usage_cmd[NCMD] = {
     "  FILE.h); the .c then includes it. q31: N must be a power of two.\n",
     /* fit */
     "usage: mdr fit (--curve FILE | --map FILE) <profile> --k-machine K [--arith f32|f64]\n"
-    "               [--method full|two-point] [--approach] [--z-e ZE] [--E0 E --w0 W]\n"
+    "               [--method full|two-point] [--approach] [--unpinned] [--z-e ZE] [--E0 E --w0 W]\n"
     "               [--model FILE] [--jobs N]\n"
     "  fits E*, w (and the base offset z0, force baseline F_base) to a measured\n"
     "  force curve z,F (CSV, --curve: JSON on stdout) or to every curve of a map\n"

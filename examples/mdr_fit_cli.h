@@ -6,7 +6,7 @@
  * argv to fit_main() when the command is "fit".
  *
  *   mdr fit --curve curve.csv <profile> --k-machine K [--method full|two-point]
- *           [--z-e ZE] [--arith f32|f64] [--E0 E --w0 W] [--approach]
+ *           [--z-e ZE] [--arith f32|f64] [--E0 E --w0 W] [--approach] [--unpinned]
  *   mdr fit --map map.csv <profile> --k-machine K [--jobs J] [same options]
  *
  *   <profile>  --profile paraboloid --R R | cone --theta RAD | powerlaw --C C
@@ -25,6 +25,9 @@
  *   --z-e      equilibrium distance of the Tabor parameter [m], 0.3e-9
  *   --E0 --w0  first guesses (default: the two-point method)
  *   --approach also fit w_adv to the approach part (JSON w_adv, w_adv_err)
+ *   --unpinned the retract recedes from its top (no adhesion hysteresis):
+ *              a retract straight within its noise to the pull-off is
+ *              fitted instead of refused (MDR_E_PINNED)
  *   --jobs     threads for a map (default: every core)
  *   --model F  (with --curve) also write the fitted model: CSV z,F,F_model,
  *              branch (approach with w_adv, or w without --approach;
@@ -47,7 +50,7 @@
 
 struct fit_args {
     const char *file, *model, *tipfile;
-    int map, f64, approach, jobs, pi, have_E0; /* pi: -1 for --profile table */
+    int map, f64, approach, unpinned, jobs, pi, have_E0; /* pi: -1 for --profile table */
     uint8_t kind, method;
     double p[3], k_m, z_e, E0, w0;
     /* --profile table: the samples as each arithmetic's contact takes them
@@ -427,6 +430,8 @@ static void fit_json_end(cli_json *j, const struct fit_args *A)
     json_str(&in, "method", A->method == MDR_FIT_FULL ? "full" : "two-point");
     json_key(&in, "approach");
     fputs(A->approach ? "true" : "false", in.fp);
+    json_key(&in, "unpinned");
+    fputs(A->unpinned ? "true" : "false", in.fp);
     json_str(&in, "arith", A->f64 ? "f64" : "f32");
     fputc('}', j->fp);
     json_units(j, &in, "m");
@@ -990,7 +995,7 @@ static int fit_flag(const char *f)
 
 static int fit_main(int argc, char **argv)
 {
-    static const char *const fit_bools[] = {"--approach", NULL};
+    static const char *const fit_bools[] = {"--approach", "--unpinned", NULL};
     struct cli_kv kv[CLI_MAX_FLAGS];
     int nkv;
     struct fit_args A;
@@ -1017,6 +1022,8 @@ static int fit_main(int argc, char **argv)
         double x = 0.0;
         if (strcmp(f, "--approach") == 0) {
             A.approach = 1;
+        } else if (strcmp(f, "--unpinned") == 0) {
+            A.unpinned = 1;
         } else if (strcmp(f, "--curve") == 0 || strcmp(f, "--map") == 0) {
             if (A.file != NULL) {
                 return usage_error("give one of --curve FILE or --map FILE", NULL);

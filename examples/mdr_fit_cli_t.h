@@ -47,6 +47,7 @@ static mdr_status FIT_SFX(fit_run)(const struct fit_args *A, const double *z, co
     opt.w0 = (FIT_T)A->w0;
     opt.method = A->method;
     opt.approach = A->approach ? 1u : 0u;
+    opt.unpinned = A->unpinned ? 1u : 0u;
     st = FIT_SFX(mdr_fit_curve)(&tip, &opt, zt, Ft, (uint32_t)n, wk, MDR_FIT_WORK_LEN(n), &r);
     o->st = st;
     if (st != MDR_OK) {

@@ -5,10 +5,11 @@ figures of docs/fitting.md ("Adhesion hysteresis"). Engine cycles (`mdr
 cycle`, paraboloid R 20 nm, E* 1 GPa, w 0.05, machine control, path -10 ->
 20 -> -40 nm, 1000 steps per segment, 1024 springs, f64), Gaussian noise of
 0, 0.1 %, 1 % and 3 % of the pull-off force on F (8 copies, seed 1), each
-fitted with `mdr fit`; per row the status or E*/E and, in parentheses, its
-distance from the truth in reported standard errors (noise-free rows: the
-relative errors of E* and w).
-Usage: python3 host_tests/fit_pinned_matrix.py [build/host/mdr]  (~1 min)"""
+fitted with `mdr fit` (the retract alone, and with --approach: rows
+"+approach"); per row the status or E*/E and, in parentheses, its distance
+from the truth in reported standard errors (noise-free rows: the relative
+errors of E* and w).
+Usage: python3 host_tests/fit_pinned_matrix.py [build/host/mdr]  (~3 s)"""
 import json
 import os
 import random
@@ -28,13 +29,13 @@ def cycle(wadv, km):
     return [float(r[1]) for r in rows], [float(r[3]) for r in rows]
 
 
-def fit(path, z, F, km, exact=False):
+def fit(path, z, F, km, exact=False, extra=()):
     with open(path, "w") as f:
         f.write("z,F\n")
         for a, b in zip(z, F):
             f.write("%r,%r\n" % (a, b))
     r = json.loads(subprocess.run([MDR, "fit", "--curve", path, "--profile", "paraboloid", "--R", "20e-9",
-                                   "--k-machine", str(km)], capture_output=True, text=True).stdout)
+                                   "--k-machine", str(km)] + list(extra), capture_output=True, text=True).stdout)
     if r["status"] != "ok":
         return r["status"].replace("MDR_E_", "")
     if exact:  # noise-free: the relative errors of E* and w
@@ -51,9 +52,12 @@ def main():
                 z, F = cycle(wadv, km)
                 fpo = abs(min(F))
                 for rel in (0.0, 0.001, 0.01, 0.03):
-                    res = [fit(path, z, [f + rel * fpo * random.gauss(0, 1) for f in F], km, rel == 0)
-                           for _ in range(1 if rel == 0 else 8)]
-                    print("w_adv %.3f k_m %.1f noise %5.1f %%: %s" % (wadv, km, 100 * rel, " ".join(res)), flush=True)
+                    copies = [[f + rel * fpo * random.gauss(0, 1) for f in F] for _ in range(1 if rel == 0 else 8)]
+                    for extra in ((), ("--approach",)):
+                        res = [fit(path, z, Fn, km, rel == 0, extra) for Fn in copies]
+                        print("w_adv %.3f k_m %.1f noise %5.1f %%%s: %s" % (wadv, km, 100 * rel,
+                                                                       " +approach" if extra else "", " ".join(res)),
+                              flush=True)
 
 
 if __name__ == "__main__":

@@ -64,6 +64,11 @@ typedef struct {
     uint8_t method;   /**< MDR_FIT_FULL (default) or MDR_FIT_TWO_POINT */
     uint8_t approach; /**< 1: also fit w_adv to the approach part (E*, z0, F_b
                            held at the retract's values); default 0 */
+    uint8_t unpinned; /**< 1: the caller knows the retract recedes from its top
+                           (no adhesion hysteresis: w_adv = w, no pinned top);
+                           a retract straight within its noise to the pull-off
+                           is then fitted as a receding branch instead of
+                           refused (MDR_E_PINNED); default 0 */
 } mdr_fit_opts_f32;
 
 /** Result of a fit (SI). */

@@ -86,7 +86,10 @@ typedef int8_t mdr_status;
 /** Fit: the retract's contact part is straight down to its pull-off, and a
  *  straight line explains it better than the receding branch: a contact
  *  pinned at one radius until it ruptures (w_adv < w), which does not
- *  determine E* and w, or a pinned top the noise hides. */
+ *  determine E* and w; or, in noisy data, a pinned top could hide in it
+ *  (a receding branch with a larger E* meets the samples as well) and
+ *  neither the caller (opts.unpinned) nor the approach (w_adv within
+ *  MDR_FIT_NOISE_SIGMAS errors of w) rules it out. */
 #define MDR_E_PINNED (-22)
 
 /** Profile kinds (uint8_t values; the meaning of p[0..2] for each). */

@@ -29,7 +29,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_FITCAP: return "fit iteration cap reached";
     case MDR_E_DEGENERATE: return "the data do not determine the parameters";
     case MDR_E_JUMPS: return "the retract jumps before the pull-off (one-branch model does not apply)";
-    case MDR_E_PINNED: return "the retract is straight to its pull-off (pinned): no receding branch to fit";
+    case MDR_E_PINNED: return "the retract is straight to its pull-off: pinned to its rupture, or a pinned top its noise may hide (fit with the approach, or state unpinned)";
     default: return "unknown status";
     }
 }

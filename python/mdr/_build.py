@@ -152,7 +152,7 @@ mdr_status mdrpy_profile_{S}(const mdr_contact_{S} *c, size_t n, const double *x
 mdr_status mdrpy_contact_tip_{S}(mdr_contact_{S} *c, const double *r, const double *f, uint16_t m, double E,
                                  double w, double *s, {T} *buf);
 mdr_status mdrpy_fit_{S}(const mdr_contact_{S} *tip, double k_m, double z_e, double E0, double w0,
-                         uint8_t method, uint8_t approach, const double *z, const double *F, uint32_t n,
+                         uint8_t method, uint8_t approach, uint8_t unpinned, const double *z, const double *F, uint32_t n,
                          {T} *work, size_t work_len, mdrpy_fit_res *o, size_t *fail);
 mdr_status mdrpy_fit_model_{S}(const mdr_contact_{S} *tip, double k_m, const mdrpy_fit_res *res,
                                double w_approach, const double *z, uint32_t n, {T} *work, size_t work_len,

@@ -76,7 +76,7 @@ class FitResult:
 
 
 def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", E0=None, w0=None,
-        approach=False, **params):
+        approach=False, unpinned=False, **params):
     """Fit E*, w, the contact point z0 and the baseline F_base to a force
     curve (libmdr's mdr_fit_curve: the same code as `mdr fit --curve`).
 
@@ -98,6 +98,9 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     arith: "f64" (default) or "f32" (what firmware computes).
     E0, w0: first guesses [Pa, J/m^2], both or neither.
     approach: also fit w_adv to the approach part (E*, z0, F_base held).
+    unpinned: the caller knows the retract recedes from its top (no
+        adhesion hysteresis, w_adv = w): a retract straight within its noise
+        to the pull-off is fitted instead of refused (MDR_E_PINNED).
 
     Returns a FitResult. A curve or an argument the library refuses raises
     mdr.Error with its status: MDR_E_FEW (too few points), MDR_E_NOCONTACT,
@@ -105,7 +108,8 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     retract), MDR_E_NONFINITE (a NaN or inf sample, .index its position),
     MDR_E_PARAM (k_machine, z_e, E0/w0), MDR_E_KIND (flat punch),
     MDR_E_FITCAP, MDR_E_DEGENERATE, MDR_E_JUMPS, MDR_E_PINNED (a retract
-    straight to its pull-off: pinned until it ruptures), MDR_E_RADIUS, ...
+    straight to its pull-off: pinned until it ruptures, or, in noisy data
+    without unpinned=True, a pinned top the noise hides), MDR_E_RADIUS, ...
     """
     if arith not in ("f32", "f64"):
         raise ValueError("fit: arith must be 'f32' or 'f64', not %r" % (arith,))
@@ -136,7 +140,8 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     work = ffi.new("%s[]" % tip._T, max(lib.mdrpy_fit_work_len(n), 1))
     res = ffi.new("mdrpy_fit_res *")
     fail = ffi.new("size_t *", n)
-    st = getattr(lib, "mdrpy_fit_" + arith)(tip._c, k, ze, e0, ww0, METHODS[method], 1 if approach else 0, dptr(z),
+    st = getattr(lib, "mdrpy_fit_" + arith)(tip._c, k, ze, e0, ww0, METHODS[method], 1 if approach else 0,
+                                            1 if unpinned else 0, dptr(z),
                                             dptr(F), n, work, len(work), res, fail)
     if st != lib.MDR_OK:
         raise _fit_error(st, z, F, fail[0] if fail[0] < n else None, method, arith)
