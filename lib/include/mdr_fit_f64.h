@@ -154,7 +154,11 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   have no solution), MDR_E_JUMPS (the retract jumps before the pull-off),
  *   MDR_E_PINNED (the full fit only: the retract straight to its pull-off
  *   and a line explains it better than the receding branch: a contact
- *   pinned until it ruptures, docs/fitting.md),
+ *   pinned until it ruptures; or, in noisy data, straight within its noise
+ *   to the pull-off, where a pinned top could hide, and neither
+ *   opts->unpinned nor the approach (opts->approach: w_adv within
+ *   MDR_FIT_NOISE_SIGMAS reported errors of w) rules it out;
+ *   docs/fitting.md),
  *   MDR_E_RADIUS (the indentation needs a contact beyond the profile's
  *   domain, e.g. a >= R of the sphere), MDR_E_NOCONV, MDR_E_OVERFLOW (from
  *   the contact module).
