@@ -87,7 +87,7 @@ static int fit64(int k, uint8_t method)
     mdr_fit_opts_f64 o;
     mdr_fit_result_f64 r;
     mdr_fit_defaults_f64(&o, KM);
-    o.unpinned = 1; /* model curves: no pinned top (at this noise the fit would ask) */
+    o.unpinned = 1; /* model curves: no pinned top (at this noise the fit refuses them otherwise: MDR_E_PINNED) */
     o.method = method;
     if (mdr_fit_curve_f64(&tip64, &o, z64[k], F64[k], NPTS, work64, MDR_FIT_WORK_LEN(NPTS), &r) != MDR_OK) {
         fprintf(stderr, "bench_fit: f64 fit of curve %d failed\n", k);
