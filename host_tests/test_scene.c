@@ -41,6 +41,10 @@
  *     TOL_Q31_STEP = 32 LSB (measured 6.6: no ill-conditioned fold here);
  *     the same tolerance for a stiff machine's pinned band near a = L
  *     (scene_q31_stiff_top).
+ * Force only against every output (scene_force_only): the step's own paths
+ * and the full tick give d and F bit for bit (tolerance 0) over dithered
+ * cycles, f64, f32 and q31, with at least TICKS/40 ticks held right after
+ * a move in each (measured 197 of 4000).
  */
 #include <float.h>
 #include <math.h>
@@ -561,6 +565,100 @@ static void scene_q31_any_step(void **state)
     assert_true(worst <= TOL_Q31_STEP);
 }
 
+/* Force only against every output: the step answers a tick asked for d
+ * and F alone by its own paths (a pinned tick, a move, the first pinned
+ * tick after a move, which computes the coefficients the moves left,
+ * MDR_M_LAZY), a tick with outputs through the full tick; both must give
+ * the same state. A cycle that dithers (every 8 ticks: back 3 ticks of the
+ * path, held there a tick, then on), per profile and control, f64, f32 and
+ * q31: d and F bit for bit at every tick, and the test counts the ticks it
+ * is about (the edge held right after it moved; the same edge radius as
+ * the tick before, with every output). Returns that count. */
+static double force_only(uint8_t kind, double p0, double p1, int ctl, double k_m)
+{
+    mdr_contact_f64 c;
+    mdr_scene_f64 a64, b64;
+    mdr_scene_f32 a32, b32;
+    mdr_scene_q31 aq, bq;
+    const double k[3] = {p0, p1, 0};
+    double umax, umin, unit, a_max = 0, a_prev = 0;
+    int i, moved = 0, held_after_move = 0;
+    assert_int_equal(mdr_contact_init_f64(&c, kind, k, E, W), MDR_OK);
+    extremes(&c, ctl, k_m, &umax, &umin);
+    assert_int_equal(mdr_scene_init_contact_f64(&a64, &c, W / 2, k_m, MDR_OUT_FORCE, NULL), MDR_OK);
+    assert_int_equal(mdr_scene_init_contact_f64(&b64, &c, W / 2, k_m, MDR_OUT_ALL, NULL), MDR_OK);
+    {
+        mdr_contact_f32 c32;
+        const float k32[3] = {(float)p0, (float)p1, 0};
+        assert_int_equal(mdr_contact_init_f32(&c32, kind, k32, (float)E, (float)W), MDR_OK);
+        assert_int_equal(mdr_scene_init_contact_f32(&a32, &c32, (float)W / 2, (float)k_m, MDR_OUT_FORCE, NULL),
+                         MDR_OK);
+        assert_int_equal(mdr_scene_init_contact_f32(&b32, &c32, (float)W / 2, (float)k_m, MDR_OUT_ALL, NULL),
+                         MDR_OK);
+    }
+    for (i = 0; i <= TICKS / 4; i++) { /* the largest radius: at umax */
+        mdr_step_f64 o;
+        assert_int_equal(step_scene64(&b64, ctl, path(i, umax, umin), &o), MDR_OK);
+        a_max = fmax(a_max, o.a);
+    }
+    assert_int_equal(mdr_scene_init_contact_f64(&b64, &c, W / 2, k_m, MDR_OUT_ALL, NULL), MDR_OK);
+    assert_int_equal(mdr_scene_init_q31_f64(&aq, &a64, 1.01 * a_max), MDR_OK);
+    assert_int_equal(mdr_scene_init_q31_f64(&bq, &b64, 1.01 * a_max), MDR_OK);
+    unit = (ctl == MDR_CONTROL_GRIPS ? aq.D0 : ctl == MDR_CONTROL_LOAD ? aq.F0 : aq.Z0) / 536870912.0;
+    for (i = 0; i <= TICKS; i++) {
+        const double u = path(i % 8 == 5 || i % 8 == 6 ? i - 3 : i, umax, umin);
+        const int32_t raw = (int32_t)lround(u / unit);
+        mdr_step_f64 oa, ob;
+        mdr_step_f32 pa, pb;
+        mdr_step_q31 qa, qb;
+        assert_int_equal(step_scene64(&a64, ctl, u, &oa), MDR_OK);
+        assert_int_equal(step_scene64(&b64, ctl, u, &ob), MDR_OK);
+        assert_int_equal(step_scene32(&a32, ctl, (float)u, &pa), MDR_OK);
+        assert_int_equal(step_scene32(&b32, ctl, (float)u, &pb), MDR_OK);
+        assert_int_equal(ctl == MDR_CONTROL_GRIPS  ? mdr_scene_step_d_q31(&aq, raw, &qa)
+                         : ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&aq, raw, &qa)
+                                                   : mdr_scene_step_z_q31(&aq, raw, &qa),
+                         MDR_OK);
+        assert_int_equal(ctl == MDR_CONTROL_GRIPS  ? mdr_scene_step_d_q31(&bq, raw, &qb)
+                         : ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&bq, raw, &qb)
+                                                   : mdr_scene_step_z_q31(&bq, raw, &qb),
+                         MDR_OK);
+        if (!(oa.d == ob.d && oa.F == ob.F && pa.d == pb.d && pa.F == pb.F && qa.d == qb.d && qa.F == qb.F)) {
+            printf("profile %d control %d k_m %g tick %d: force only d %.17g F %.17g (f32 %.9g %.9g, q31 %ld "
+                   "%ld), every output d %.17g F %.17g (f32 %.9g %.9g, q31 %ld %ld)\n",
+                   kind, ctl, k_m, i, oa.d, oa.F, (double)pa.d, (double)pa.F, (long)qa.d, (long)qa.F, ob.d, ob.F,
+                   (double)pb.d, (double)pb.F, (long)qb.d, (long)qb.F);
+            fail();
+        }
+        if (ob.a > 0 && ob.a == a_prev && moved) {
+            held_after_move++;
+        }
+        moved = ob.a != a_prev;
+        a_prev = ob.a;
+    }
+    return held_after_move;
+}
+
+static void scene_force_only(void **state)
+{
+    static const struct {
+        uint8_t kind;
+        double p0, p1;
+    } prof[3] = {{MDR_PROFILE_PARABOLOID, 1e-6, 0}, {MDR_PROFILE_CONE, 0.3, 0}, {MDR_PROFILE_POWERLAW, 1e12, 3}};
+    double least = TICKS;
+    int j, ctl;
+    (void)state;
+    for (j = 0; j < 3; j++) {
+        for (ctl = 1; ctl <= 4; ctl++) { /* (4: the machine at k_m 20) */
+            least = fmin(least, force_only(prof[j].kind, prof[j].p0, prof[j].p1, ctl < 4 ? ctl : (int)MDR_CONTROL_MACHINE,
+                                           ctl == 3 ? 0.5 : ctl == 4 ? 20.0 : 0.0));
+        }
+    }
+    printf("  scene force only = every output, bit for bit, f64 f32 q31: %.0f ticks at least held right after "
+           "a move (of %d)\n", least, TICKS);
+    assert_true(least >= TICKS / 40);
+}
+
 /* A stiff machine's pinned band near a = L: z 2^sz = (1 + kappa x) D -
  * kappa G at a band end is a depth of (1 + kappa x) times the scene's
  * (tens of units of D0 at kappa ~ 160), which only its quotient by 2^sz
@@ -768,6 +866,7 @@ int main(void)
 #if MDR_CFG_Q31
         cmocka_unit_test(scene_q31_vs_f64),
         cmocka_unit_test(scene_q31_any_step),
+        cmocka_unit_test(scene_force_only),
         cmocka_unit_test(scene_q31_stiff_top),
         cmocka_unit_test(scene_q31_load_fold_unresolved),
         cmocka_unit_test(scene_q31_errors),

@@ -249,8 +249,8 @@ static inline void fz_scene_step_q31(mdr_scene_q31 *s, int ctl, int32_t v)
         double t = s->tau / 1073741824.0, g = s->gc / 1073741824.0 * pow(t, 2.0 * s->n);
         double cw = s->c_w / 536870912.0 * t, ca = s->c_adv / 536870912.0 * t, d = s->d / 536870912.0;
         double tol = FZ_Q31_BAND_LSB / 536870912.0 + (g + cw + fabs(d)) / 4194304.0 +
-                     (s->mode == MDR_CONTROL_LOAD ? FZ_Q31_CTL_LSB / 536870912.0 / (t * t) : 0.0);
-        if (s->mode == MDR_CONTROL_MACHINE) {
+                     ((s->mode & 0x7Fu) == MDR_CONTROL_LOAD ? FZ_Q31_CTL_LSB / 536870912.0 / (t * t) : 0.0);
+        if ((s->mode & 0x7Fu) == MDR_CONTROL_MACHINE) { /* (bit 7: the stale mark of a move) */
             const double kap = 1073741824.0 / s->al_z - 1.0;
             tol += FZ_Q31_CTL_LSB / 536870912.0 * (1.0 + kap) / (1.0 + kap * t * t);
         }

@@ -55,7 +55,7 @@ typedef struct {
     MDR_SFX(mdr_energy) *en; /**< energy bookkeeping, or NULL */
     uint8_t n;       /**< exponent of g = C x^n, 1..MDR_POWERLAW_N_MAX */
     uint8_t outputs; /**< MDR_OUT_* of init, with MDR_OUT_ENERGY when en is kept */
-    uint8_t mode;    /**< control mode of the pinned edge; 0 exactly when separated */
+    uint8_t mode;    /**< control mode (MDR_CONTROL_*) of the pinned edge, bit 7 set while a move has left its linear coefficients (pin) to the next pinned tick; 0 exactly when separated */
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the scene has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* (MDR_FLAG_NOCONV) */

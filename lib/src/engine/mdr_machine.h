@@ -11,4 +11,10 @@
  * refusals (negative statuses) */
 enum { MDR_M_ROOT, MDR_M_FOLD, MDR_M_END };
 
+/* the mark on an engine's mode while its pinned edge's linear
+ * coefficients wait for the next pinned tick (MDR_M_LAZY) */
+#define MDR_M_STALE 0x80u
+/* 1 where the solver's moves leave control ctl's coefficients stale */
+#define MDR_M_LAZY_IN(ctl) ((MDR_M_LAZY >> (ctl)) & 1u)
+
 #endif /* MDR_MACHINE_H */
