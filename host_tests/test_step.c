@@ -466,6 +466,68 @@ static void pinned_band_and_outputs(void **st)
     }
 }
 
+/* Force only against every output, the spring engines (test_scene's
+ * scene_force_only for the scenes): a tick asked for d and F alone is
+ * answered by the step's own paths (pinned; a move; the first pinned tick
+ * after a move, which computes the coefficients the move left, q31:
+ * MDR_M_LAZY), a tick with outputs by the full tick. The waypoint paths,
+ * dithered (every 8 ticks: back 3 ticks, held a tick, then on), per
+ * control, f64, f32 and q31: d and F bit for bit (tolerance 0) at every
+ * tick, and at least SEG/8 ticks held right after a move in each (the
+ * ticks the test is about). */
+static void force_only_springs(void **st)
+{
+    static const int kinds[3] = {K_F64, K_F32, K_Q31};
+    int j, path;
+    uint8_t ctl;
+    long least = 5 * SEG;
+    (void)st;
+    for (path = 0; path < 2; path++) {
+        for (j = 0; j < 3; j++) {
+            for (ctl = 1; ctl <= 3; ctl++) {
+                static eng g, h; /* (the tables: too large for the stack) */
+                out_t o, p;
+                double a_prev = 0;
+                int seg, moved = 0;
+                long held = 0;
+                eng_tables(&g, 1024, 8e-6);
+                eng_init(&g, kinds[j], ctl, JW, 0.4 * JW, KM);
+                h = g; /* (h's engine reads g's tables) */
+                switch (kinds[j]) {
+                case K_F64: assert_int_equal(mdr_engine_outputs_f64(&h.e64, MDR_OUT_FORCE), MDR_OK); break;
+                case K_F32: assert_int_equal(mdr_engine_outputs_f32(&h.e32, MDR_OUT_FORCE), MDR_OK); break;
+                default: assert_int_equal(mdr_engine_outputs_q31(&h.eq, MDR_OUT_FORCE), MDR_OK); break;
+                }
+                for (seg = 0; seg < 5; seg++) {
+                    int i;
+                    for (i = 1; i <= SEG; i++) {
+                        const int k = i % 8 == 5 || i % 8 == 6 ? i - 3 : i;
+                        const double u0 = waypoint(ctl, path, seg), u1 = waypoint(ctl, path, seg + 1);
+                        const double u = u0 + (u1 - u0) * k / SEG;
+                        assert_int_equal(eng_step(&g, u, &o), MDR_OK);
+                        assert_int_equal(eng_step(&h, u, &p), MDR_OK);
+                        if (!(o.d == p.d && o.F == p.F)) {
+                            print_error("%s %s path %d segment %d tick %d: every output d %.17g F %.17g, force "
+                                        "only d %.17g F %.17g\n", kname[kinds[j]], cname[ctl], path, seg, i, o.d,
+                                        o.F, p.d, p.F);
+                            fail();
+                        }
+                        if (o.a > 0 && o.a == a_prev && moved) {
+                            held++;
+                        }
+                        moved = o.a != a_prev;
+                        a_prev = o.a;
+                    }
+                }
+                least = held < least ? held : least;
+            }
+        }
+    }
+    printf("  spring engines: force only = every output, bit for bit; %ld ticks at least held right after a "
+           "move (of %d)\n", least, 5 * SEG);
+    assert_true(least >= SEG / 8);
+}
+
 /* ---------------------------------------------------- the table's edges */
 
 /* Tolerance of a Hertz radius a = sqrt(R d) reached by a control: in float
@@ -980,6 +1042,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pinned_band_and_outputs),
+        cmocka_unit_test(force_only_springs),
         cmocka_unit_test(table_edges),
         cmocka_unit_test(energy_of_cycles),
         cmocka_unit_test(energy_overflow_f32),
