@@ -113,7 +113,7 @@ typedef struct {
     uint8_t touched; /**< 1 once the instance has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* */
     uint8_t outputs; /**< MDR_OUT_* (init: MDR_OUT_ALL | MDR_OUT_ENERGY) */
-    uint8_t mode;    /**< control mode of the pinned edge; 0 exactly when separated */
+    uint8_t mode;    /**< control mode (MDR_CONTROL_*) of the pinned edge, bit 7 set while a move has left its linear coefficients (pin) to the next pinned tick; 0 exactly when separated */
 } MDR_SFX(mdr_engine);
 
 /** What one step did. All SI; "before"/"after" describe the last jump of
