@@ -249,10 +249,12 @@ mdr_status mdr_engine_init_f64(mdr_engine_f64 *e, const mdr_table_f64 *tab,
  *         MDR_E_NOCONV (not expected: bisection backs every iteration;
  *         state unchanged, flag set)
  *
- * Cost: O(1) when the edge is pinned; otherwise O(1) plus one comparison per
- * node the edge passes (it moves from where it was) and a safeguarded
- * Newton solve (typically 2-4 iterations, capped) in the spring where it
- * stops; a fold adds a bisection to locate it.
+ * Cost: O(1) when the edge is pinned (under load and through a machine the
+ * first pinned tick after a move computes the pinned relation once: a few
+ * divisions); otherwise O(1) plus one comparison per node the edge passes
+ * (it moves from where it was) and a safeguarded Newton solve (typically
+ * 2-4 iterations, capped) in the spring where it stops; a fold adds a
+ * bisection to locate it.
  */
 mdr_status mdr_engine_step_d_f64(mdr_engine_f64 *e, double d, mdr_step_f64 *out);
 

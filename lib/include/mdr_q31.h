@@ -217,10 +217,13 @@ mdr_status mdr_engine_init_q31_f64(mdr_engine_q31 *e, const mdr_table_q31 *tab, 
  *        Integer arithmetic only. Beyond the range: saturated, MDR_FLAG_SAT.
  * @return as mdr_engine_step_d_f32() (no MDR_E_NONFINITE: every int is valid)
  *
- * Cost: O(1) pinned (no division); a moving edge passes one node per
+ * Cost: O(1) pinned (no division; under load and through a machine the
+ * first pinned tick after a move computes the pinned relation once: a few
+ * normalised 32-bit divisions); a moving edge passes one node per
  * comparison and solves its spring by safeguarded Newton in Q1.30 (each
- * iteration one int64 division); fixed load and machine add one int64
- * division per step.
+ * iteration one normalised 32-bit division, no library division); the
+ * slow path's state under load or through a machine adds one int64
+ * division.
  */
 mdr_status mdr_engine_step_d_q31(mdr_engine_q31 *e, int32_t d, mdr_step_q31 *out);
 /** @brief One tick at fixed load: F, Q2.29 of F0; see step_d. */

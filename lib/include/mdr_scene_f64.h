@@ -130,9 +130,11 @@ mdr_status mdr_scene_init_contact_f64(mdr_scene_f64 *s, const mdr_contact_f64 *c
  *         MDR_E_NOCONV (not expected: bisection backs every iteration;
  *         state unchanged, MDR_FLAG_NOCONV set)
  *
- * Cost: pinned edge, a few products; moving edge, a Newton solve of a
- * polynomial in t (2-4 evaluations from where the edge was; one
- * evaluation is about 2n + 10 flops); no sqrt, log or table access.
+ * Cost: pinned edge, a few products (under load and through a machine the
+ * first pinned tick after a move computes the pinned relation once: a few
+ * divisions); moving edge, a Newton solve of a polynomial in t from the
+ * tangent at the edge (usually one evaluation; one evaluation is about
+ * 2n + 10 flops); no sqrt, log or table access.
  */
 mdr_status mdr_scene_step_d_f64(mdr_scene_f64 *s, double d, mdr_step_f64 *out);
 

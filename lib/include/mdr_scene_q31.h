@@ -123,9 +123,10 @@ mdr_status mdr_scene_init_q31_f64(mdr_scene_q31 *q, const mdr_scene_f64 *s, doub
  *         state unchanged, MDR_FLAG_OUTSIDE); MDR_E_NOCONV (not expected:
  *         bisection backs every iteration; MDR_FLAG_NOCONV)
  *
- * Cost: pinned edge, two comparisons and two products; moving edge,
- * Newton from the tangent at the edge (one normalised 32-bit division per
- * step, usually one step).
+ * Cost: pinned edge, two comparisons and two products (the first pinned
+ * tick after a move computes the pinned relation once: a few normalised
+ * 32-bit divisions); moving edge, Newton from the tangent at the edge (one
+ * normalised 32-bit division per step, usually one step).
  */
 mdr_status mdr_scene_step_d_q31(mdr_scene_q31 *s, int32_t d, mdr_step_q31 *out);
 /** @brief One tick at fixed load: F, Q2.29 of F0; see step_d. While

@@ -112,9 +112,11 @@ mdr_status MDR_SFX(mdr_scene_init_contact)(MDR_SFX(mdr_scene) *s, const MDR_SFX(
  *         MDR_E_NOCONV (not expected: bisection backs every iteration;
  *         state unchanged, MDR_FLAG_NOCONV set)
  *
- * Cost: pinned edge, a few products; moving edge, a Newton solve of a
- * polynomial in t (2-4 evaluations from where the edge was; one
- * evaluation is about 2n + 10 flops); no sqrt, log or table access.
+ * Cost: pinned edge, a few products (under load and through a machine the
+ * first pinned tick after a move computes the pinned relation once: a few
+ * divisions); moving edge, a Newton solve of a polynomial in t from the
+ * tangent at the edge (usually one evaluation; one evaluation is about
+ * 2n + 10 flops); no sqrt, log or table access.
  */
 mdr_status MDR_SFX(mdr_scene_step_d)(MDR_SFX(mdr_scene) *s, MDR_T d, MDR_SFX(mdr_step) *out);
 
