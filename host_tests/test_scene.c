@@ -44,7 +44,10 @@
  * Force only against every output (scene_force_only): the step's own paths
  * and the full tick give d and F bit for bit (tolerance 0) over dithered
  * cycles, f64, f32 and q31, with at least TICKS/40 ticks held right after
- * a move in each (measured 197 of 4000).
+ * a move in each (measured 180 of 4000), and with a NaN control and a
+ * change of control mode right after a move (test_step's
+ * control_switch_after_move checks such a change against the closed
+ * forms).
  */
 #include <float.h>
 #include <math.h>
@@ -573,7 +576,12 @@ static void scene_q31_any_step(void **state)
  * path, held there a tick, then on), per profile and control, f64, f32 and
  * q31: d and F bit for bit at every tick, and the test counts the ticks it
  * is about (the edge held right after it moved; the same edge radius as
- * the tick before, with every output). Returns that count. */
+ * the tick before, with every output). Now and then right after a move
+ * (stale coefficients) a NaN control (refused: the instance unchanged) and
+ * a tick under the other control of d or F at the state's own value (a
+ * change of control mode; at a band's end, so whether the edge then moves
+ * is rounding's call: test_step checks a change to the band's middle),
+ * both again bit for bit. Returns the count. */
 static double force_only(uint8_t kind, double p0, double p1, int ctl, double k_m)
 {
     mdr_contact_f64 c;
@@ -582,7 +590,10 @@ static double force_only(uint8_t kind, double p0, double p1, int ctl, double k_m
     mdr_scene_q31 aq, bq;
     const double k[3] = {p0, p1, 0};
     double umax, umin, unit, a_max = 0, a_prev = 0;
-    int i, moved = 0, held_after_move = 0;
+    int i, moved = 0, held_after_move = 0, switched = 0;
+    mdr_step_f64 last64;
+    mdr_step_f32 last32;
+    mdr_step_q31 lastq;
     assert_int_equal(mdr_contact_init_f64(&c, kind, k, E, W), MDR_OK);
     extremes(&c, ctl, k_m, &umax, &umin);
     assert_int_equal(mdr_scene_init_contact_f64(&a64, &c, W / 2, k_m, MDR_OUT_FORCE, NULL), MDR_OK);
@@ -633,9 +644,41 @@ static double force_only(uint8_t kind, double p0, double p1, int ctl, double k_m
         if (ob.a > 0 && ob.a == a_prev && moved) {
             held_after_move++;
         }
+        if (ob.a > 0 && moved && i % 97 == 0) {
+            /* right after a move (the coefficients stale): one tick under
+             * the other control of d or F at the state's own value, and a
+             * NaN control (refused, the instance unchanged), then on under
+             * ctl (a new control mode: the slow path's full band) */
+            const int other = ctl == MDR_CONTROL_GRIPS ? MDR_CONTROL_LOAD : MDR_CONTROL_GRIPS;
+            const mdr_scene_f64 keep64 = a64;
+            const mdr_scene_f32 keep32 = a32;
+            assert_int_equal(step_scene64(&a64, ctl, NAN, &last64), MDR_E_NONFINITE);
+            assert_int_equal(step_scene32(&a32, ctl, NAN, &last32), MDR_E_NONFINITE);
+            assert_memory_equal(&a64, &keep64, sizeof a64);
+            assert_memory_equal(&a32, &keep32, sizeof a32);
+            assert_int_equal(step_scene64(&a64, other, other == MDR_CONTROL_GRIPS ? oa.d : oa.F, &oa), MDR_OK);
+            assert_int_equal(step_scene64(&b64, other, other == MDR_CONTROL_GRIPS ? ob.d : ob.F, &ob), MDR_OK);
+            assert_int_equal(step_scene32(&a32, other, other == MDR_CONTROL_GRIPS ? pa.d : pa.F, &pa), MDR_OK);
+            assert_int_equal(step_scene32(&b32, other, other == MDR_CONTROL_GRIPS ? pb.d : pb.F, &pb), MDR_OK);
+            assert_int_equal(other == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&aq, qa.d, &lastq)
+                                                        : mdr_scene_step_F_q31(&aq, qa.F, &lastq),
+                             MDR_OK);
+            qa = lastq;
+            assert_int_equal(other == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&bq, qb.d, &lastq)
+                                                        : mdr_scene_step_F_q31(&bq, qb.F, &lastq),
+                             MDR_OK);
+            qb = lastq;
+            if (!(oa.d == ob.d && oa.F == ob.F && pa.d == pb.d && pa.F == pb.F && qa.d == qb.d && qa.F == qb.F)) {
+                printf("profile %d control %d k_m %g tick %d, switched to control %d: force only and every "
+                       "output differ\n", kind, ctl, k_m, i, other);
+                fail();
+            }
+            switched++;
+        }
         moved = ob.a != a_prev;
         a_prev = ob.a;
     }
+    assert_true(switched > 0);
     return held_after_move;
 }
 

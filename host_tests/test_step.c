@@ -528,6 +528,63 @@ static void force_only_springs(void **st)
     assert_true(least >= SEG / 8);
 }
 
+/* A change of control mode right after a move (the moved edge's pinned
+ * coefficients stale: MDR_M_LAZY): every engine made with a machine,
+ * driven under one control along the approach of path 0 until the edge has
+ * just moved, then one tick under each other control at the value that puts
+ * d in the middle of the closed forms' band at the edge's radius (JKR: g(a)
+ * - dl(a; w) .. g(a) - dl(a; w_adv)): the edge must stay (a unchanged) and
+ * F = 2E*(a d - G) with d at the band's middle (tol_F, tol_d). The engine
+ * state before the switch is restored for each second control. */
+static void control_switch_after_move(void **st)
+{
+    static const int kinds[NKIND] = {K_F64, K_F32, K_Q31, K_S64, K_S32};
+    int j, c1, c2, checked = 0;
+    (void)st;
+    for (j = 0; j < NKIND; j++) {
+        for (c1 = 1; c1 <= 3; c1++) {
+            static eng g, h;
+            out_t o, prev;
+            int i;
+            eng_tables(&g, 1024, 8e-6);
+            eng_init(&g, kinds[j], MDR_CONTROL_MACHINE, JW, 0.4 * JW, KM);
+            g.ctl = (uint8_t)c1;
+            memset(&prev, 0, sizeof prev);
+            memset(&o, 0, sizeof o);
+            for (i = 1; i <= SEG / 2 || !(o.a > 0 && o.a != prev.a); i++) {
+                const double u0 = waypoint(g.ctl, 0, 0), u1 = waypoint(g.ctl, 0, 1);
+                prev = o;
+                assert_true(i < SEG);
+                assert_int_equal(eng_step(&g, u0 + (u1 - u0) * i / SEG, &o), MDR_OK);
+            }
+            for (c2 = 1; c2 <= 3; c2++) {
+                const double a = o.a, lo = g_cf(a) - dl_cf(a, g.w), hi = g_cf(a) - dl_cf(a, g.wa);
+                const double d = 0.5 * (lo + hi), F = 2 * JE * (a * d - G_cf(a));
+                out_t q;
+                char what[160];
+                if (c2 == c1) {
+                    continue;
+                }
+                h = g; /* (h's engine reads g's tables) */
+                h.ctl = (uint8_t)c2;
+                assert_int_equal(eng_step(&h, c2 == MDR_CONTROL_GRIPS ? d : c2 == MDR_CONTROL_LOAD ? F : d + F / KM, &q),
+                                 MDR_OK);
+                if (!(q.a == o.a && q.araw == o.araw)) {
+                    print_error("%s: control %d to %d right after a move at a = %.12g: the edge moved to %.12g\n",
+                                kname[kinds[j]], c1, c2, o.a, q.a);
+                    fail();
+                }
+                snprintf(what, sizeof what, "%s: control %d to %d right after a move: F", kname[kinds[j]], c1, c2);
+                rel_le(q.F, F, tol_F(&h, a, d), 1, what);
+                snprintf(what, sizeof what, "%s: control %d to %d right after a move: d", kname[kinds[j]], c1, c2);
+                rel_le(q.d, d, tol_d(&h, a), 1, what);
+                checked++;
+            }
+        }
+    }
+    printf("  control switched right after a move: %d cases, edge held, F and d of the closed forms\n", checked);
+}
+
 /* ---------------------------------------------------- the table's edges */
 
 /* Tolerance of a Hertz radius a = sqrt(R d) reached by a control: in float
@@ -1043,6 +1100,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pinned_band_and_outputs),
         cmocka_unit_test(force_only_springs),
+        cmocka_unit_test(control_switch_after_move),
         cmocka_unit_test(table_edges),
         cmocka_unit_test(energy_of_cycles),
         cmocka_unit_test(energy_overflow_f32),
