@@ -85,7 +85,7 @@ test: deps-check
 	$(MAKE) --no-print-directory host-tests
 	$(MAKE) --no-print-directory demo-check cmake-check install-check
 	$(MAKE) --no-print-directory lint
-	$(MAKE) --no-print-directory san-tests
+	$(MAKE) --no-print-directory san-tests fused-tests
 	$(MAKE) --no-print-directory matrix
 	$(MAKE) --no-print-directory fuzz-replay
 	$(MAKE) --no-print-directory fuzz
@@ -95,7 +95,7 @@ test: deps-check
 	$(MAKE) --no-print-directory cross
 	$(MAKE) --no-print-directory target-test
 	$(MAKE) --no-print-directory python-test
-	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) $(FUSED_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 deps:
 	@sh mk/deps.sh

@@ -6,7 +6,9 @@
 # by the port's run-qemu:
 #   m4        Cortex-M4F, mps2-an386: the unit tests, the library against
 #             the committed ref/ vectors (read from ref/vectors through
-#             semihosting), the engine tests, the q31 tests and trace
+#             semihosting), the engine tests, the scene tests (whose f32
+#             step fuses its multiply-adds here: MDR_PORT_FMA_F32), the q31
+#             tests and trace
 #   m7        Cortex-M7, mps2-an500: the same
 #   m3        Cortex-M3 (no FPU), mps2-an385: the q31 tests and trace, the
 #             step placed in RAM (MDR_STEP_SECTION=".ramfunc")
@@ -44,7 +46,7 @@ TGT_NAME_m3 := Cortex-M3 $(QEMU_m3)
 TGT_NAME_m0 := Cortex-M0 $(QEMU_m0)
 TGT_NAME_rv32imac := RV32IMAC virt
 TGT_NAME_rv32imafc := RV32IMAFC virt
-TGT_TESTS_m4 := test_vectors test_engine test_unit test_q31 q31_trace
+TGT_TESTS_m4 := test_vectors test_engine test_unit test_scene test_q31 q31_trace
 TGT_TESTS_m7 := $(TGT_TESTS_m4)
 TGT_TESTS_m3 := test_q31 q31_trace
 TGT_TESTS_m0 := test_q31 q31_trace

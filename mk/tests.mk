@@ -5,6 +5,7 @@
 #
 #   make host-tests   every suite of TESTS, then the CLI (host_tests/test_cli.sh)
 #   make san-tests    the suites of SAN_TESTS with -fsanitize=address,undefined
+#   make fused-tests  the suites of FUSED_TESTS, the library with MDR_PORT_FUSED
 #   make matrix       build matrix over mdr_options.h (MATRIX=short|full)
 #   make stress       numerical stress sweep (STRESS=short|long)
 #   make q31-exact    the q31 step bit-identical over 6 compiler builds
@@ -15,10 +16,16 @@
 # host_tests/, links libmdr.a and cmocka; the suites in TESTS_WITH_REF also
 # compile the GSL reference (ref/mdr_ref.c) and link GSL. A new suite: add
 # its name to TESTS (and SAN_TESTS).
-.PHONY: host-tests san-tests matrix stress q31-exact mutate mutate-quick
+.PHONY: host-tests san-tests fused-tests matrix stress q31-exact mutate mutate-quick
 TESTS := test_unit test_vectors test_ref test_gsl test_engine test_engine_ref test_q31 test_scene test_step test_config test_critical
 SAN_TESTS := test_unit test_vectors test_engine test_q31 test_scene test_step test_critical
 TESTS_WITH_REF := test_ref test_gsl test_engine_ref test_q31
+# the f32 step fuses its multiply-adds where fmaf is one instruction
+# (MDR_PORT_FMA_F32, lib/src/mdr_hooks.h: the Cortex-M4F, M7, RV32F; not
+# this host without -mfma): these suites run against a library that fuses
+# with libm's fmaf (port/host/mdr_port.h, MDR_PORT_FUSED), the FPU cores'
+# results; the M4F target runs test_scene too
+FUSED_TESTS := test_scene test_step
 SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 TEST_HDRS := $(wildcard host_tests/*.h) ref/mdr_ref.h
 # extra sources and libraries of suite $(1)
@@ -45,6 +52,16 @@ $(B)/san/test_%: host_tests/test_%.c $(TEST_HDRS) $$(call test_srcs,test_$$*) $(
 host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
 	@for t in $(TESTS); do echo "== $$t"; ./$(B)/host/$$t || exit 1; done
 	@echo "== cli"; bash host_tests/test_cli.sh $(B)/host/mdr
+$(B)/fused/%.o: lib/src/%.c $(LIB_DEPS)
+	@mkdir -p $(@D)
+	$(HOSTCC) $(MDR_CFLAGS) -O2 -DMDR_PORT_FUSED -c $< -o $@
+$(B)/fused/libmdr.a: $(addprefix $(B)/fused/,mdr_f32.o mdr_f64.o mdr_q31.o mdr_status.o)
+	ar rcs $@ $^
+$(B)/fused/test_%: host_tests/test_%.c $(TEST_HDRS) $(B)/fused/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) -O2 $< $(B)/fused/libmdr.a -lcmocka -lm -o $@
+fused-tests: $(addprefix $(B)/fused/,$(FUSED_TESTS))
+	@nm $(B)/fused/mdr_f32.o | grep -q ' U fmaf$$' || { echo "fused-tests: the library does not call fmaf"; exit 1; }
+	@for t in $(FUSED_TESTS); do echo "== fused $$t"; ./$(B)/fused/$$t || exit 1; done
 san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
 	@for t in $(SAN_TESTS); do echo "== sanitized $$t"; ./$(B)/san/$$t || exit 1; done
 

@@ -15,6 +15,9 @@
  *   MDR_MAXV, MDR_MINV, MDR_TINY  the largest, the smallest normal and the
  *                  smallest subnormal positive number
  *   MDR_SQRT(x)    the port's square-root hook, or our own routine
+ *   MDR_FMA(a, b, c)  a b + c, rounded once where the port fuses it
+ *                  (f32: MDR_PORT_FMA_F32, mdr_hooks.h; f64: never, so the
+ *                  f64 results are the host's on every core), else twice
  */
 #ifndef MDR_ARITH_H
 #define MDR_ARITH_H
@@ -42,6 +45,9 @@
 #else
 #define MDR_SQRT(x) mdr_m_sqrt_f32(x)
 #endif
+#ifdef MDR_PORT_FMA_F32
+#define MDR_FMA(a, b, c) MDR_PORT_FMA_F32(a, b, c)
+#endif
 #elif defined(MDR_ARITH_F64)
 #define MDR_T double
 #define MDR_SFX(name) name##_f64
@@ -62,6 +68,10 @@
 #endif
 #else
 #error "define MDR_ARITH_F32 or MDR_ARITH_F64 before including mdr_arith.h"
+#endif
+
+#ifndef MDR_FMA
+#define MDR_FMA(a, b, c) ((a) * (b) + (c))
 #endif
 
 /* what the engines' state machine (engine/mdr_machine.inc) needs of an

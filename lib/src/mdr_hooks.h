@@ -14,6 +14,16 @@
  *                  of sqrtf/sqrt that a freestanding link cannot resolve),
  *                  so such a build without that flag stops here with an
  *                  #error (the compilers define __NO_MATH_ERRNO__ with it)
+ *   MDR_PORT_FMA_F32(a, b, c)
+ *                  a b + c rounded once (fused multiply-add), used by the
+ *                  f32 step's kernels where one instruction does it;
+ *                  default: __builtin_fmaf where the compiler says it is
+ *                  one instruction (GCC's __FP_FAST_FMAF: Cortex-M4F/M7,
+ *                  RV32F, aarch64, x86-64 with -mfma), else undefined: the
+ *                  kernels then round a b and the sum separately. A port
+ *                  may define it (e.g. Clang, which does not define
+ *                  __FP_FAST_FMAF, with -fno-math-errno), or define it as
+ *                  ((a) * (b) + (c)) to keep the two roundings.
  *   MDR_INLINE     qualifiers of the small helpers of the step (default
  *                  `static inline`)
  *   MDR_FORCE_INLINE  qualifiers of the step's fast paths, which the public
@@ -40,6 +50,10 @@
 #if defined(MDR_PORT_SQRT_BUILTIN) && (defined(__GNUC__) || defined(__clang__)) && \
     !defined(__NO_MATH_ERRNO__)
 #error "libmdr: this port maps sqrt to __builtin_sqrt(f), which needs -fno-math-errno (MDR_REQUIRED_CFLAGS of lib/Filelists.mk); without it the objects call sqrtf/sqrt from libm"
+#endif
+
+#if !defined(MDR_PORT_FMA_F32) && defined(__GNUC__) && defined(__FP_FAST_FMAF)
+#define MDR_PORT_FMA_F32(a, b, c) __builtin_fmaf(a, b, c)
 #endif
 
 #ifndef MDR_INLINE

@@ -7,6 +7,13 @@
  *  MDR_PORT_SQRT_F32/F64(x)  the compiler builtin: one instruction with
  *                            -fno-math-errno (the Makefile sets it). Define
  *                            MDR_PORT_OWN_SQRT to test lib/'s own routine.
+ *  MDR_PORT_FMA_F32(a, b, c)  the default (mdr_hooks.h: fused where the
+ *                            compiler says fmaf is one instruction; not on
+ *                            x86-64 without -mfma). Define MDR_PORT_FUSED
+ *                            to fuse with __builtin_fmaf anyway (a call of
+ *                            libm's fmaf, correctly rounded: the result of
+ *                            the Cortex-M4F's vfma), which is how the host
+ *                            tests the f32 step of the FPU cores.
  *  MDR_STEP_FN               the default (lib/src/mdr_hooks.h).
  *  MDR_ASSERT(cond)          internal invariants: trap on the host (the
  *                            tests and sanitizer builds see any violation).
@@ -23,6 +30,10 @@
 #define MDR_PORT_SQRT_F32(x) __builtin_sqrtf(x)
 #define MDR_PORT_SQRT_F64(x) __builtin_sqrt(x)
 #define MDR_PORT_SQRT_BUILTIN 1 /* needs -fno-math-errno (mdr_hooks.h) */
+#endif
+
+#ifdef MDR_PORT_FUSED
+#define MDR_PORT_FMA_F32(a, b, c) __builtin_fmaf(a, b, c)
 #endif
 
 #define MDR_ASSERT(cond) ((cond) ? (void)0 : __builtin_trap())
