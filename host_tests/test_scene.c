@@ -14,6 +14,9 @@
  *     to cancellation near pull-off; measured 8.0e-15);
  *   TOL_32 = 1e-5 (the accuracy goal): scene f32 against scene f64, same
  *     cycles (measured 7.4e-6, the cone through a machine);
+ *   the same two for an AFM tip through soft cantilevers, in fine and
+ *     coarse ticks (scene_soft_machine; measured 1.2e-15 and 5.2e-7 on the
+ *     host, 4.6e-7 with the M4F's fused multiply-adds);
  *   TOL_JKR = 2e-15 (f64): pull-off force under fixed load -1.5 pi w R and
  *     under fixed grips -5/6 pi w R (seed 4.36, 4.38), relative (measured
  *     3.4e-16);
@@ -235,6 +238,87 @@ static void scene_cone_vs_engine(void **state)
 {
     (void)state;
     compare_profile(MDR_PROFILE_CONE, 0.3, 1e-4);
+}
+
+/* An AFM tip through a soft cantilever (kappa = 2E* a/k_m of tens to
+ * hundreds over the cycle, where the cycles above have ~1): a 20 nm
+ * paraboloid on polystyrene (E* = 3.8 GPa, w = 0.066 J/m^2; the afm cycle of
+ * make step-cost) through k_m = 0.2 and 0.02 N/m, z from -10 nm to 50 nm and
+ * back past the pull-off (-57 nm, -477 nm) in 2000 ticks and in 40 (steps of
+ * 3 nm and more: the fast path's tangent start far from the root); the f64 scene against the f64 engine
+ * (TOL_ENG64, the same events at the same ticks, TOL_EN on the dissipated
+ * energy), the f32 scene against the f64 scene (TOL_32) */
+static void scene_soft_machine(void **state)
+{
+    static mdr_node_f64 nodes[MDR_TABLE_NODES(4096)];
+    static run rs, re, r32;
+    const double Rt = 20e-9, Et = 3.8e9, Wt = 0.066, p[3] = {Rt, 0, 0};
+    const float pf[3] = {(float)Rt, 0, 0};
+    static const double kms[2] = {0.2, 0.02};
+    static const int nts[2] = {2000, 40};
+    mdr_contact_f64 c;
+    mdr_contact_f32 c32;
+    mdr_table_f64 tab;
+    int ki, ni, wi, i;
+    (void)state;
+    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, p, Et, Wt), MDR_OK);
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, (float)Et, (float)Wt), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f64(&tab, nodes, 4096, &c, 4.0 * Rt), MDR_OK);
+    for (ki = 0; ki < 2; ki++) {
+        for (ni = 0; ni < 2; ni++) {
+            for (wi = 0; wi < 2; wi++) {
+                const int n = nts[ni], h = n / 2;
+                const double w_adv = wi == 0 ? 0.5 * Wt : Wt;
+                /* below the pull-off: 1.5 times the cantilever's deflection
+                 * at the JKR force under load, 1.5 pi w R, and 10 nm */
+                const double zlo = -1.5 * (1.5 * M_PI * Wt * Rt) / kms[ki] - 10e-9;
+                double e64 = 0, e32 = 0, mF;
+                mdr_scene_f64 s;
+                mdr_scene_f32 s32;
+                mdr_engine_f64 eng;
+                mdr_energy_f64 en;
+                char what[96];
+                assert_int_equal(mdr_scene_init_contact_f64(&s, &c, w_adv, kms[ki], MDR_OUT_ALL, &en), MDR_OK);
+                assert_int_equal(mdr_scene_init_contact_f32(&s32, &c32, (float)w_adv, (float)kms[ki], MDR_OUT_ALL, NULL),
+                                 MDR_OK);
+                assert_int_equal(mdr_engine_init_f64(&eng, &tab, Et, Wt, w_adv, kms[ki]), MDR_OK);
+                for (i = 0; i <= n; i++) {
+                    const double z = i <= h ? -10e-9 + 60e-9 * i / h : 50e-9 - (50e-9 - zlo) * (i - h) / h;
+                    mdr_step_f64 o, oe;
+                    mdr_step_f32 o32;
+                    assert_int_equal(mdr_scene_step_z_f64(&s, z, &o), MDR_OK);
+                    assert_int_equal(mdr_engine_step_z_f64(&eng, z, &oe), MDR_OK);
+                    assert_int_equal(mdr_scene_step_z_f32(&s32, (float)z, &o32), MDR_OK);
+                    rs.F[i] = o.F;
+                    re.F[i] = oe.F;
+                    r32.F[i] = o32.F;
+                    if (o.event != oe.event) {
+                        fail_msg("k_m %g, %d ticks, w_adv %g, tick %d: event %s, engine %s", kms[ki], n, w_adv, i,
+                                 mdr_event_str(o.event), mdr_event_str(oe.event));
+                    }
+                }
+                for (i = n + 1; i <= TICKS; i++) {
+                    rs.F[i] = re.F[i] = r32.F[i] = 0.0;
+                }
+                mF = maxabs(re.F);
+                for (i = 0; i <= n; i++) {
+                    double x = fabs(rs.F[i] - re.F[i]) / mF, y = fabs((double)r32.F[i] - rs.F[i]) / mF;
+                    e64 = x > e64 ? x : e64;
+                    e32 = y > e32 ? y : e32;
+                }
+                printf("  soft machine k_m %g N/m, %d ticks, w_adv/w %.1f: F scene-engine %.2e, f32-f64 %.2e; "
+                       "dissipated %.6e J (engine %.6e)\n",
+                       kms[ki], n, w_adv / Wt, e64, e32, en.dissipated, eng.en.dissipated);
+                snprintf(what, sizeof what, "soft machine k_m %g, %d ticks: F scene f64 - engine f64", kms[ki], n);
+                err_le(e64, TOL_ENG64, what);
+                snprintf(what, sizeof what, "soft machine k_m %g, %d ticks: F scene f32 - scene f64", kms[ki], n);
+                err_le(e32, TOL_32, what);
+                snprintf(what, sizeof what, "soft machine k_m %g, %d ticks: dissipated scene - engine", kms[ki], n);
+                rel_le(en.dissipated, eng.en.dissipated, 0, TOL_EN, what);
+                assert_true(en.cycles == 1 && eng.en.cycles == 1);
+            }
+        }
+    }
 }
 
 /* JKR pull-off: load -1.5 pi w R, grips -5/6 pi w R (4.36, 4.38), the f64
@@ -902,6 +986,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(scene_paraboloid_vs_engine),
         cmocka_unit_test(scene_cone_vs_engine),
+        cmocka_unit_test(scene_soft_machine),
         cmocka_unit_test(scene_jkr_pull_off),
         cmocka_unit_test(scene_outputs),
         cmocka_unit_test(scene_errors),
