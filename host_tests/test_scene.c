@@ -321,6 +321,42 @@ static void scene_soft_machine(void **state)
     }
 }
 
+/* The same control twice after a move gives the same d and F (tolerance
+ * 0): the move's tick and the pinned tick after it compute the pinned
+ * relation alike (the grips band's F through mdr_m_pin_F: with fused
+ * multiply-adds, MDR_FMA, a move that rounded kF d + F0 twice left F an ulp
+ * off the pinned tick's; found by a differential fuzz of the fused build),
+ * under grips on an approach (the edge advances every tick) and a
+ * retraction, f32 and f64 */
+static void scene_repeat_control(void **state)
+{
+    int i, k;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        mdr_scene_f32 s;
+        mdr_scene_f64 s64;
+        assert_int_equal(mdr_scene_init_paraboloid_f32(&s, (float)R, (float)E, (float)W, (float)W / 2, 0.0f,
+                                                       k == 0 ? MDR_OUT_FORCE : MDR_OUT_ALL, NULL),
+                         MDR_OK);
+        assert_int_equal(mdr_scene_init_paraboloid_f64(&s64, R, E, W, W / 2, 0.0, k == 0 ? MDR_OUT_FORCE : MDR_OUT_ALL,
+                                                       NULL),
+                         MDR_OK);
+        for (i = 1; i <= 800; i++) {
+            const double d = i <= 400 ? 1e-9 * i : 400e-9 - 1e-9 * (i - 400); /* approach, then back */
+            mdr_step_f32 a, b;
+            mdr_step_f64 a64, b64;
+            assert_int_equal(mdr_scene_step_d_f32(&s, (float)d, &a), MDR_OK);
+            assert_int_equal(mdr_scene_step_d_f32(&s, (float)d, &b), MDR_OK);
+            assert_int_equal(mdr_scene_step_d_f64(&s64, d, &a64), MDR_OK);
+            assert_int_equal(mdr_scene_step_d_f64(&s64, d, &b64), MDR_OK);
+            if (a.F != b.F || a.d != b.d || a64.F != b64.F || a64.d != b64.d) {
+                fail_msg("tick %d, d %g, outputs %d: the same d twice gave F %a then %a (f64 %a then %a)", i, d, k,
+                         (double)a.F, (double)b.F, a64.F, b64.F);
+            }
+        }
+    }
+}
+
 /* JKR pull-off: load -1.5 pi w R, grips -5/6 pi w R (4.36, 4.38), the f64
  * scene and (q31 builds) the q31 scene made from it, on the same path */
 static void scene_jkr_pull_off(void **state)
@@ -987,6 +1023,7 @@ int main(void)
         cmocka_unit_test(scene_paraboloid_vs_engine),
         cmocka_unit_test(scene_cone_vs_engine),
         cmocka_unit_test(scene_soft_machine),
+        cmocka_unit_test(scene_repeat_control),
         cmocka_unit_test(scene_jkr_pull_off),
         cmocka_unit_test(scene_outputs),
         cmocka_unit_test(scene_errors),
