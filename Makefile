@@ -21,7 +21,7 @@
 #   mk/tests.mk    host and sanitizer suites, matrix, stress, q31-exact, mutate
 #   mk/fuzz.mk     fuzz, fuzz-replay          mk/critical.mk  crit-sweep
 #   mk/cross.mk    cross, size                mk/target.mk    target-test (QEMU)
-#   mk/lint.mk     lint                       mk/bench.mk     bench, step-cost
+#   mk/lint.mk     lint                       mk/bench.mk     bench, step-cost, step-trace
 #   mk/ref.mk      ref-check, tables          mk/fit.mk       fit suites, bench-fit
 #   mk/python.mk   python, python-test        mk/docs.mk      docs, headers, spdx-check
 #   mk/install.mk  install, install-check, cmake-check, errno-check

@@ -37,6 +37,37 @@ step-cost: $(B)/tgt-m4/step_cost.elf $(B)/tgt-m3/step_cost.elf
 	@awk -v name=step-cost -f mk/splice.awk $(B)/bench/step_cost.md docs/performance.md > $(B)/bench/performance.md \
 	  && cp $(B)/bench/performance.md docs/performance.md
 	@echo "step-cost: $(B)/bench/step_cost.csv written; docs/performance.md's step-cost table updated"
+# Where one line's instructions go: make step-trace [TRACE=scene,q31,afm]
+# [CORE=m3|m4] [CLASS=moving|pinned|separated|all] [DEPTH=1|2|..]. step_cost.c runs that
+# line alone (-DSTEP_TRACE), against a copy of the core's library with -g
+# (same code), under QEMU's instruction trace (-singlestep -d exec,nochain);
+# mk/step_trace.py checks the trace's ticks against the counted ones and
+# prints the class's instructions per tick by inlined function and by source
+# line (two minutes; the trace goes through a pipe, nothing large is written).
+TRACE ?= scene,q31,afm
+CORE ?= m3
+CLASS ?= moving
+DEPTH ?= 1
+.PHONY: step-trace
+TRACE_CC_m3 = $(TGT_m3)
+TRACE_CC_m4 = $(TGT_m4) -DMDR_STEP_SECTION='".ramfunc"'
+$(B)/trace-%/libmdr.a: $(LIB_DEPS)
+	@mkdir -p $(@D)
+	for o in $(TGT_LIB_OBJS); do $(TRACE_CC_$*) $(MDR_REQUIRED_CFLAGS) -O2 -g $(WARN) -Ilib/include \
+	  -c lib/src/$$o.c -o $(@D)/$$o.o || exit 1; done
+	rm -f $@ && $(MDR_CM_PREFIX)ar rcs $@ $(addprefix $(@D)/,$(addsuffix .o,$(TGT_LIB_OBJS)))
+step-trace: $(B)/trace-$(CORE)/libmdr.a host_tests/target/step_cost.c mk/step_trace.py
+	$(TRACE_CC_$(CORE)) -g -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(STEPCOST_CORE_$(CORE))"' \
+	  -DSTEP_TRACE='"$(TRACE)"' $(TGT_TEST_CFLAGS) host_tests/target/step_cost.c \
+	  $(MDR_CM_STARTUP) $< $(MDR_CM_LDFLAGS) -lm -o $(B)/trace-$(CORE)/step_trace.elf
+	@d=$(B)/trace-$(CORE); rm -f $$d/qemu.fifo && mkfifo $$d/qemu.fifo && \
+	  { /usr/bin/python3 mk/step_trace.py $$d/step_trace.elf $$d/qemu.fifo $$d/ticks.log --line $(TRACE) \
+	      --class $(CLASS) --depth $(DEPTH) --prefix $(MDR_CM_PREFIX) & } && \
+	  timeout 600 qemu-system-arm -M $(QEMU_$(CORE)) -nographic -monitor none -serial none \
+	    -semihosting-config enable=on,target=native -icount shift=7 -singlestep -d exec,nochain \
+	    -dfilter $$(/usr/bin/python3 mk/step_trace.py $$d/step_trace.elf --dfilter --line $(TRACE)) \
+	    -D $$d/qemu.fifo -kernel $$d/step_trace.elf > $$d/ticks.log; q=$$?; wait $$!; p=$$?; \
+	  rm -f $$d/qemu.fifo; [ $$q -eq 0 ] || { echo "step-trace: QEMU failed"; cat $$d/ticks.log; exit 1; }; exit $$p
 # The benchmark matrix (host_tests/bench_matrix.c): time and error on the
 # host, instructions from callgrind (one dump per row, divided by the row's
 # evaluations) and from the M4F run above; CSV, Markdown and the plot are

@@ -22,8 +22,12 @@
  * Counting. With -icount shift=7 QEMU advances its virtual clock by 128 ns
  * per instruction and the SysTick counts that clock at the board's 25 MHz:
  * 3.2 counts per instruction (the scale is measured by a loop of known
- * length, not assumed), so round(counts / scale) is the exact number of
- * instructions between two reads. Each step is called through a timing
+ * length, not assumed). The SysTick counts whole periods, so c counts
+ * between two reads are floor(3.2 k) or one more for k instructions,
+ * whatever the phase: k is the one integer with 3.2 k in [c - 1, c + 1)
+ * (decode), the exact number of instructions between the reads (make
+ * step-trace checks it against QEMU's instruction trace, tick by tick;
+ * rounding c / 3.2 instead is off by one on a fifth of the ticks). Each step is called through a timing
  * function of its type (never inlined or specialised: noipa), which reads
  * the SysTick, calls the step through a pointer and reads it again; the same
  * function calling an empty step of the same type gives the count of
@@ -31,9 +35,14 @@
  * one's, plus the empty step's own two instructions: the instructions of the
  * step from its entry to its return, none of the harness's. Exactly
  * reproducible.
+ *
+ * Built with -DSTEP_TRACE='"engine,arith,cycle"' (make step-trace) it runs
+ * that line alone and prints each tick's count and class ("tick,<n>,<k>,
+ * <class>"), for mk/step_trace.py to set beside QEMU's instruction trace.
  */
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "mdr.h"
 #include "../bench_scene.h"
@@ -97,26 +106,49 @@ TIMED(timed_spring_q31, mdr_engine_q31, int32_t, mdr_step_q31)
 TIMED(timed_scene_f32, mdr_scene_f32, float, mdr_step_f32)
 TIMED(timed_scene_q31, mdr_scene_q31, int32_t, mdr_step_q31)
 
-/* counts per instruction: 2^16 turns of a 2-instruction loop */
-static double calibrate(void)
+/* SysTick counts of n turns of a 2-instruction loop */
+static uint32_t loop_counts(uint32_t n)
 {
-    uint32_t n = 1u << 16, t0 = MDR_PORT_SYST_CVR, t1;
+    uint32_t t0 = MDR_PORT_SYST_CVR, t1;
     __asm__ volatile("1: subs %0, %0, #1\n\tbne 1b" : "+r"(n) : : "cc");
     t1 = MDR_PORT_SYST_CVR;
-    return (double)counts(t0, t1) / (2.0 * (double)(1u << 16));
+    return counts(t0, t1);
 }
 
-/* instructions of a step: its count less the timing function's own
- * (base), plus the empty step's two instructions */
+/* counts per instruction: the difference of 2^20 and 2^19 turns (the
+ * reads around the loop cancel), to 1e-4: 2^shift ns at the SysTick's
+ * 25 MHz is 3.2 exactly, and the measurement is within 2e-6 of it */
+static double calibrate(void)
+{
+    const uint32_t c1 = loop_counts(1u << 19), c2 = loop_counts(1u << 20);
+    const double v = (double)(c2 - c1) / (2.0 * (double)(1u << 19));
+    return (double)(long)(v * 1e4 + 0.5) / 1e4;
+}
+
+/* the instructions k between two reads c counts apart: the SysTick counts
+ * whole periods of its clock, so c is floor(scale k) or one more, whatever
+ * the phase of the first read: scale k in [c - 1, c + 1), an interval of
+ * 2/scale < 1 instruction, which holds one integer */
+static uint32_t decode(uint32_t c)
+{
+    const double lo = ((double)c - 1.0) / scale;
+    uint32_t k = lo > 0 ? (uint32_t)lo : 0;
+    return (double)k < lo ? k + 1 : k;
+}
+
+/* instructions of a step: the timing function's instructions around it
+ * less those around the empty step (base), plus the empty step's two */
 static uint32_t instr(uint32_t c, uint32_t base)
 {
-    double v = (double)c / scale - (double)base / scale + 2.0;
-    return v > 0 ? (uint32_t)(v + 0.5) : 0;
+    return decode(c) - decode(base) + 2u;
 }
 
 static void note(stats *s, uint32_t c, uint32_t base, int cls)
 {
     uint32_t k = instr(c, base);
+#ifdef STEP_TRACE
+    printf("tick,%ld,%lu,%d\n", s->n + 1, (unsigned long)k, cls);
+#endif
     s->sum += k;
     s->n++;
     s->cls_sum[cls] += k;
@@ -130,6 +162,9 @@ static void note(stats *s, uint32_t c, uint32_t base, int cls)
 static void print(const char *engine, const char *arith, const char *cycle, const stats *s)
 {
     int i;
+    if (s->n == 0) {
+        return; /* (not run: STEP_TRACE) */
+    }
     printf("%s,%s,%s,%s,%.1f,%lu", engine, arith, BENCH_CORE, cycle, s->sum / (double)s->n,
            (unsigned long)s->max);
     for (i = 0; i < 3; i++) {
@@ -204,6 +239,19 @@ RUN_SPRING(run_spring_z_q31, q31, in_q31, mdr_engine_step_z_q31)
 RUN_SCENE(run_scene_f32, f32, in_f32)
 RUN_SCENE(run_scene_q31, q31, in_q31)
 
+/* the line to run: every one, or STEP_TRACE's alone */
+static int want(const char *engine, const char *arith, const char *cycle)
+{
+#ifdef STEP_TRACE
+    char line[48];
+    snprintf(line, sizeof line, "%s,%s,%s", engine, arith, cycle);
+    return strcmp(line, STEP_TRACE) == 0;
+#else
+    (void)engine, (void)arith, (void)cycle;
+    return 1;
+#endif
+}
+
 /* the afm cycle's base position at tick i (1 ... AFM_TICKS), metres */
 static double afm_path(long i)
 {
@@ -223,7 +271,7 @@ int main(void)
     scale = calibrate();
     printf("# %s (QEMU -icount shift=7): %.4f SysTick counts per instruction (measured), "
            "timing function %.0f instructions around the step\n",
-           BENCH_CORE, scale, (double)timed_spring_f32_base() / scale - 2.0);
+           BENCH_CORE, scale, (double)decode(timed_spring_f32_base()) - 2.0);
     /* grips: the exact sphere, N = 1024, the README's cycle */
     for (i = 1; i <= STEPS; i++) {
         in_f32[i] = (float)bench_path(i);
@@ -253,8 +301,9 @@ int main(void)
         for (i = 1; i <= STEPS; i++) {
             in_q31[i] = mdr_q31_in(&q, MDR_Q_D, in_f32[i]);
         }
-        if (run_spring_f32(&e, STEPS, &a) || run_spring_q31(&q, STEPS, &b) ||
-            run_scene_f32(&s, STEPS, 0, &d)) {
+        if ((want("spring", "f32", "grips") && run_spring_f32(&e, STEPS, &a)) ||
+            (want("spring", "q31", "grips") && run_spring_q31(&q, STEPS, &b)) ||
+            (want("scene", "f32", "grips") && run_scene_f32(&s, STEPS, 0, &d))) {
             return 1;
         }
         for (i = 1; i <= STEPS; i++) { /* (the q31 scene's own depth unit) */
@@ -263,7 +312,7 @@ int main(void)
                 return 1;
             }
         }
-        if (run_scene_q31(&sq, STEPS, 0, &dq)) {
+        if (want("scene", "q31", "grips") && run_scene_q31(&sq, STEPS, 0, &dq)) {
             return 1;
         }
         printf("engine,arith,core,cycle,mean,max,separated,pinned,moving\n");
@@ -301,8 +350,9 @@ int main(void)
         for (i = 1; i <= AFM_TICKS; i++) {
             in_q31[i] = mdr_q31_in(&q, MDR_Q_Z, in_f32[i]);
         }
-        if (run_spring_z_f32(&e, AFM_TICKS, &a) || run_spring_z_q31(&q, AFM_TICKS, &b) ||
-            run_scene_f32(&s, AFM_TICKS, 1, &d)) {
+        if ((want("spring", "f32", "afm") && run_spring_z_f32(&e, AFM_TICKS, &a)) ||
+            (want("spring", "q31", "afm") && run_spring_z_q31(&q, AFM_TICKS, &b)) ||
+            (want("scene", "f32", "afm") && run_scene_f32(&s, AFM_TICKS, 1, &d))) {
             return 1;
         }
         for (i = 1; i <= AFM_TICKS; i++) {
@@ -311,7 +361,7 @@ int main(void)
                 return 1;
             }
         }
-        if (run_scene_q31(&sq, AFM_TICKS, 1, &dq)) {
+        if (want("scene", "q31", "afm") && run_scene_q31(&sq, AFM_TICKS, 1, &dq)) {
             return 1;
         }
         print("spring", "f32", "afm", &a);
