@@ -49,6 +49,11 @@ CORE ?= m3
 CLASS ?= moving
 DEPTH ?= 1
 .PHONY: step-trace
+ifneq ($(filter step-trace,$(MAKECMDGOALS)),)
+ifeq ($(filter m3 m4,$(CORE)),)
+$(error step-trace: CORE=$(CORE) is not a core it traces (m3 or m4))
+endif
+endif
 TRACE_CC_m3 = $(TGT_m3)
 TRACE_CC_m4 = $(TGT_m4) -DMDR_STEP_SECTION='".ramfunc"'
 $(B)/trace-%/libmdr.a: $(LIB_DEPS)
@@ -60,12 +65,14 @@ step-trace: $(B)/trace-$(CORE)/libmdr.a host_tests/target/step_cost.c mk/step_tr
 	$(TRACE_CC_$(CORE)) -g -DMDR_PORT_CYCLES_SYSTICK -DBENCH_CORE='"$(STEPCOST_CORE_$(CORE))"' \
 	  -DSTEP_TRACE='"$(TRACE)"' $(TGT_TEST_CFLAGS) host_tests/target/step_cost.c \
 	  $(MDR_CM_STARTUP) $< $(MDR_CM_LDFLAGS) -lm -o $(B)/trace-$(CORE)/step_trace.elf
-	@d=$(B)/trace-$(CORE); rm -f $$d/qemu.fifo && mkfifo $$d/qemu.fifo && \
+	@d=$(B)/trace-$(CORE); f=$$(/usr/bin/python3 mk/step_trace.py $$d/step_trace.elf --dfilter --line $(TRACE) \
+	    --class $(CLASS) --depth $(DEPTH) --prefix $(MDR_CM_PREFIX)) || exit 2; \
+	  rm -f $$d/qemu.fifo && mkfifo $$d/qemu.fifo && \
 	  { /usr/bin/python3 mk/step_trace.py $$d/step_trace.elf $$d/qemu.fifo $$d/ticks.log --line $(TRACE) \
 	      --class $(CLASS) --depth $(DEPTH) --prefix $(MDR_CM_PREFIX) & } && \
 	  timeout 600 qemu-system-arm -M $(QEMU_$(CORE)) -nographic -monitor none -serial none \
 	    -semihosting-config enable=on,target=native -icount shift=7 -singlestep -d exec,nochain \
-	    -dfilter $$(/usr/bin/python3 mk/step_trace.py $$d/step_trace.elf --dfilter --line $(TRACE)) \
+	    -dfilter $$f \
 	    -D $$d/qemu.fifo -kernel $$d/step_trace.elf > $$d/ticks.log; q=$$?; wait $$!; p=$$?; \
 	  rm -f $$d/qemu.fifo; [ $$q -eq 0 ] || { echo "step-trace: QEMU failed"; cat $$d/ticks.log; exit 1; }; exit $$p
 # The benchmark matrix (host_tests/bench_matrix.c): time and error on the

@@ -130,6 +130,16 @@ def main():
                     help="name a function with this many of its inlining callers (1: the innermost alone)")
     ap.add_argument("--prefix", default="arm-none-eabi-")
     a = ap.parse_args()
+    line = a.line.split(",")
+    if len(line) != 3 or line[0] not in ("spring", "scene") or line[1] not in ("f32", "q31") or \
+            line[2] not in ("grips", "afm"):
+        print("step_trace: TRACE=%s is not a line of make step-cost (engine,arith,cycle: spring|scene, "
+              "f32|q31, grips|afm)" % a.line, file=sys.stderr)
+        sys.exit(2)
+    if a.depth < 1 or a.top < 1:
+        ap.error("--depth and --top count from 1")
+    if not a.dfilter and (a.qemu_log is None or a.ticks_log is None):
+        ap.error("the trace and the ticks' log are needed")
     syms = symbols(a.elf, a.prefix)
     if a.dfilter:
         print(dfilter(a.elf, a.prefix, syms, a.line))
