@@ -26,10 +26,12 @@
  * between two reads are floor(3.2 k) or one more for k instructions,
  * whatever the phase: k is the one integer with 3.2 k in [c - 1, c + 1)
  * (decode), the exact number of instructions between the reads (make
- * step-trace checks it against QEMU's instruction trace, tick by tick;
- * rounding c / 3.2 instead is off by one on a fifth of the ticks). Each step is called through a timing
- * function of its type (never inlined or specialised: noipa), which reads
- * the SysTick, calls the step through a pointer and reads it again; the same
+ * step-trace checks it against QEMU's instruction trace, tick by tick).
+ * Rounding c / 3.2 is not exact: it counted the spring f32 grips cycle's
+ * pinned ticks 24.2 on average where they take 24.0. Each step is called
+ * through a timing function of its type (never inlined or specialised:
+ * noipa), which reads the SysTick, calls the step through a pointer and
+ * reads it again; the same
  * function calling an empty step of the same type gives the count of
  * everything but the step, so a tick's cost is its count minus the empty
  * one's, plus the empty step's own two instructions: the instructions of the
