@@ -38,20 +38,37 @@ step-cost: $(B)/tgt-m4/step_cost.elf $(B)/tgt-m3/step_cost.elf
 	  && cp $(B)/bench/performance.md docs/performance.md
 	@echo "step-cost: $(B)/bench/step_cost.csv written; docs/performance.md's step-cost table updated"
 # Where one line's instructions go: make step-trace [TRACE=scene,q31,afm]
-# [CORE=m3|m4] [CLASS=moving|pinned|separated|all] [DEPTH=1|2|..]. step_cost.c runs that
-# line alone (-DSTEP_TRACE), against a copy of the core's library with -g
-# (same code), under QEMU's instruction trace (-singlestep -d exec,nochain);
-# mk/step_trace.py checks the trace's ticks against the counted ones and
-# prints the class's instructions per tick by inlined function and by source
-# line (two minutes; the trace goes through a pipe, nothing large is written).
+# [CORE=m3|m4] [CLASS=moving|pinned|separated|all] [DEPTH=1] [TOP=25].
+# step_cost.c runs that line alone (-DSTEP_TRACE), against a copy of the
+# core's library with -g (same code), under QEMU's instruction trace
+# (-singlestep -d exec,nochain); mk/step_trace.py checks the trace's ticks
+# against the counted ones and prints the TOP largest of the class's
+# instructions per tick by function (with DEPTH - 1 of its inlining callers)
+# and by source line, and what the rest add up to (about two minutes; the
+# trace goes through a pipe, nothing large is written). The variables are
+# checked before anything is built (one line, make stops).
 TRACE ?= scene,q31,afm
 CORE ?= m3
 CLASS ?= moving
 DEPTH ?= 1
+TOP ?= 25
 .PHONY: step-trace
 ifneq ($(filter step-trace,$(MAKECMDGOALS)),)
+override CORE := $(patsubst m4f,m4,$(CORE))
+comma := ,
+TRACE_W := $(subst $(comma), ,$(TRACE))
+ifneq ($(words $(TRACE_W)) $(filter spring scene,$(word 1,$(TRACE_W))) $(filter f32 q31,$(word 2,$(TRACE_W))) \
+      $(filter grips afm,$(word 3,$(TRACE_W))),3 $(TRACE_W))
+$(error step-trace: TRACE=$(TRACE) is not a line of make step-cost (engine,arith,cycle: spring|scene,f32|q31,grips|afm))
+endif
 ifeq ($(filter m3 m4,$(CORE)),)
-$(error step-trace: CORE=$(CORE) is not a core it traces (m3 or m4))
+$(error step-trace: CORE=$(CORE) is not a core it traces (m3, m4 or m4f))
+endif
+ifeq ($(filter moving pinned separated all,$(CLASS)),)
+$(error step-trace: CLASS=$(CLASS) is not a tick class (moving, pinned, separated or all))
+endif
+ifeq ($(shell echo '$(DEPTH) $(TOP)' | grep -Ex '[1-9][0-9]{0,2} [1-9][0-9]{0,3}'),)
+$(error step-trace: DEPTH=$(DEPTH) and TOP=$(TOP) must be counts from 1)
 endif
 endif
 TRACE_CC_m3 = $(TGT_m3)
@@ -66,10 +83,10 @@ step-trace: $(B)/trace-$(CORE)/libmdr.a host_tests/target/step_cost.c mk/step_tr
 	  -DSTEP_TRACE='"$(TRACE)"' $(TGT_TEST_CFLAGS) host_tests/target/step_cost.c \
 	  $(MDR_CM_STARTUP) $< $(MDR_CM_LDFLAGS) -lm -o $(B)/trace-$(CORE)/step_trace.elf
 	@d=$(B)/trace-$(CORE); f=$$(/usr/bin/python3 mk/step_trace.py $$d/step_trace.elf --dfilter --line $(TRACE) \
-	    --class $(CLASS) --depth $(DEPTH) --prefix $(MDR_CM_PREFIX)) || exit 2; \
+	    --class $(CLASS) --depth $(DEPTH) --top $(TOP) --prefix $(MDR_CM_PREFIX)) || exit 2; \
 	  rm -f $$d/qemu.fifo && mkfifo $$d/qemu.fifo && \
 	  { /usr/bin/python3 mk/step_trace.py $$d/step_trace.elf $$d/qemu.fifo $$d/ticks.log --line $(TRACE) \
-	      --class $(CLASS) --depth $(DEPTH) --prefix $(MDR_CM_PREFIX) & } && \
+	      --class $(CLASS) --depth $(DEPTH) --top $(TOP) --prefix $(MDR_CM_PREFIX) & } && \
 	  timeout 600 qemu-system-arm -M $(QEMU_$(CORE)) -nographic -monitor none -serial none \
 	    -semihosting-config enable=on,target=native -icount shift=7 -singlestep -d exec,nochain \
 	    -dfilter $$f \

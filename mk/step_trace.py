@@ -2,24 +2,28 @@
 # SPDX-License-Identifier: MIT
 """mk/step_trace.py: where a real-time step's instructions go (make step-trace).
 
-Sets QEMU's instruction trace (-singlestep -d exec,nochain: one line per
+Reads QEMU's instruction trace (-singlestep -d exec,nochain: one line per
 executed instruction, its address) of host_tests/target/step_cost.c built with
--DSTEP_TRACE beside that program's own per-tick counts ("tick,<n>,<k>,<class>").
-A tick is the instructions between the timing function's call of the step and
-the return into it (the step and everything it calls); its length must equal
-step_cost's count for that tick (checked: the two methods count alike).
-Each address is named by addr2line (-f -i: the innermost inlined function and
-its source line), and the ticks of one class are summed per function and per
-source line, printed as instructions per tick of that class, largest first.
+-DSTEP_TRACE and sets it beside that program's own per-tick counts
+("tick,<n>,<k>,<class>"). A tick is the instructions between the timing
+function's call of the step and the return into it (the step and everything
+it calls); its length must equal step_cost's count for that tick (checked:
+the two methods count alike). Each address is named by addr2line (-f -i: the
+innermost inlined function, its inlining callers and its source line), and the
+ticks of one class are summed per function (with depth - 1 of its callers) and
+per source line, printed as instructions per tick of that class, the top
+largest first and then what the rest add up to.
 
 The step runs from RAM (MDR_STEP_SECTION=".ramfunc", on every core here:
 QEMU's counts do not depend on where code sits), so QEMU need only log the
 .data section (where .ramfunc lands), the timing function, the library's
-functions and the runtime's helpers (not the harness, printf and the rest of libc): `step_trace.py ELF --dfilter --line ...` prints that -dfilter.
+functions and the runtime's helpers (not the harness, printf and the rest of
+libc): `step_trace.py ELF --dfilter --line ...` prints that -dfilter.
 
 usage: step_trace.py ELF --dfilter --line engine,arith,cycle
-       step_trace.py ELF QEMU_LOG TICKS_LOG --line engine,arith,cycle [--class moving|pinned|separated|all]
-                     [--top N] [--prefix arm-none-eabi-]
+       step_trace.py ELF QEMU_LOG TICKS_LOG --line engine,arith,cycle
+                     [--class moving|pinned|separated|all] [--depth N] [--top N]
+                     [--prefix arm-none-eabi-]
 """
 import argparse
 import array
@@ -177,12 +181,15 @@ def main():
     total = sum(by_fn.values()) / n
     print("%d %s ticks of %d, %.1f instructions each (trace and count agree on every tick)"
           % (len(sel), a.cls, len(counts), total))
-    print("\n%-9s %s" % ("instr/tick", "innermost function"))
-    for fn, k in by_fn.most_common(a.top):
-        print("%9.1f  %s" % (k / n, fn))
-    print("\n%-9s %s" % ("instr/tick", "source line (function)"))
-    for (loc, fn), k in by_line.most_common(a.top):
-        print("%9.1f  %s (%s)" % (k / n, loc, fn))
+    head = "function" if a.depth == 1 else "function < its inlining callers"
+    for title, cnt in ((head, by_fn), ("source line (%s)" % head, by_line)):
+        print("\n%-9s %s" % ("instr/tick", title))
+        top = cnt.most_common(a.top)
+        for key, k in top:
+            print("%9.1f  %s" % (k / n, key if isinstance(key, str) else "%s (%s)" % key))
+        rest = sum(cnt.values()) - sum(k for _, k in top)
+        if rest:
+            print("%9.1f  (the other %d)" % (rest / n, len(cnt) - len(top)))
 
 
 if __name__ == "__main__":
