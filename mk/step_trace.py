@@ -81,7 +81,7 @@ def ticks_of(log, lo, hi, entries):
     return ticks
 
 
-def dfilter(elf, prefix, syms, line):
+def dfilter(elf, prefix, syms, timed):
     """QEMU's -dfilter: .data (.ramfunc), the timing function, the library, helpers"""
     out = subprocess.run([prefix + "readelf", "-SW", elf], capture_output=True, text=True, check=True).stdout
     rng = []
@@ -89,8 +89,7 @@ def dfilter(elf, prefix, syms, line):
         f = ln.replace("[ ", "[").split()
         if len(f) > 5 and f[1] == ".data":
             rng.append((int(f[3], 16), int(f[3], 16) + int(f[5], 16)))
-    eng, arith = line.split(",")[:2]
-    rng.append(syms["timed_%s_%s" % (eng, arith)])
+    rng.append(syms[timed])
     # the library (a step in RAM may call into flash, through a veneer) and
     # the runtime's helpers; not the harness, printf and the rest of libc
     rng += [v for k, v in syms.items() if k.startswith(("mdr_", "__", "mem"))]
@@ -145,17 +144,17 @@ def main():
     if not a.dfilter and (a.qemu_log is None or a.ticks_log is None):
         ap.error("the trace and the ticks' log are needed")
     syms = symbols(a.elf, a.prefix)
+    timed = "timed_%s_%s" % (line[0], line[1])  # (the timing function of the line's step)
     if a.dfilter:
-        print(dfilter(a.elf, a.prefix, syms, a.line))
+        print(dfilter(a.elf, a.prefix, syms, timed))
         return
-    eng, arith = a.line.split(",")[:2]
-    lo, hi = syms["timed_%s_%s" % (eng, arith)]
+    lo, hi = syms[timed]
     ticks = ticks_of(a.qemu_log, lo, hi, {v[0] for k, v in syms.items() if k.startswith("mdr_")})
     counts = []  # (read after the trace: QEMU writes both at once, the trace may be a pipe)
     with open(a.ticks_log) as fh:
-        for line in fh:
-            if line.startswith("tick,"):
-                _, n, k, c = line.strip().split(",")
+        for row in fh:
+            if row.startswith("tick,"):
+                k, c = row.strip().split(",")[2:]
                 counts.append((int(k), int(c)))
     # the timing function is also called for its empty step (16 times, first)
     ticks = ticks[len(ticks) - len(counts):] if counts else []
@@ -163,7 +162,6 @@ def main():
         sys.exit("step_trace: %d ticks in the trace, %d counted" % (len(ticks), len(counts)))
     bad = [i for i, (t, (k, _)) in enumerate(zip(ticks, counts)) if len(t) != k]
     if bad:
-        i = bad[0]
         sys.exit("step_trace: %d ticks differ, the first: %s" % (len(bad), ", ".join(
             "tick %d: %d in the trace, %d counted" % (j + 1, len(ticks[j]), counts[j][0]) for j in bad[:6])))
     sel = [t for t, (_, c) in zip(ticks, counts) if a.cls == "all" or c == CLASSES[a.cls]]
