@@ -105,6 +105,7 @@ typedef struct {
     int32_t kF, F0;
     int32_t s_lo, s_hi;
     uint8_t sd, sF;
+    uint8_t open; /**< the end a move left to compute (internal), 0: none */
 } mdr_pinned_q31;
 
 /** The coefficients of one spring of a q31 table in an engine's units

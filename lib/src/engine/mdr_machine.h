@@ -14,6 +14,9 @@ enum { MDR_M_ROOT, MDR_M_FOLD, MDR_M_END };
 /* the mark on an engine's mode while its pinned edge's linear
  * coefficients wait for the next pinned tick (MDR_M_LAZY) */
 #define MDR_M_STALE 0x80u
+/* the band end a move left open (MDR_M_LAZY_END): pin.open */
+#define MDR_M_OPEN_LO 1u
+#define MDR_M_OPEN_HI 2u
 /* 1 where the solver's moves leave control ctl's coefficients stale */
 #define MDR_M_LAZY_IN(ctl) ((MDR_M_LAZY >> (ctl)) & 1u)
 
