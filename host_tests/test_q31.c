@@ -242,6 +242,79 @@ static void scenes_vs_ref(void **st)
            worst[0], worst[2], worst[1], worst[3], worst[4]);
 }
 
+/* The adhesion's resolution against the table's extent (MDR_Q31_ADH_LSB):
+ * a paraboloid, R = 10 um, E* = 1e6 Pa, w = w_adv = 0.05 J/m^2, 256
+ * springs to L = f a_po (a_po its JKR pull-off radius under fixed load,
+ * f = 2 ... 3000). The pull-off force 1.5 pi w R (seed 4.36) in LSB of F,
+ * with F0 = 2E* L D0 and D0 worked out here as init documents it (the
+ * least power of two times Dg >= g(L) + dl_w(L)): below the limit init
+ * refuses (MDR_E_PARAM; with w = 0 the same table is accepted), above it
+ * a load cycle (to |F_po|, then to -2 |F_po| in 3000 ticks) pulls off
+ * within TOL_LSB of the f64 engine on the same table, as the scenes do. */
+static void adhesion_range(void **st)
+{
+    static const double f[] = {2.0, 5.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0};
+    const double R = 10e-6, E = 1e6, w = 0.05, Fpo = 1.5 * 3.14159265358979323846 * w * R;
+    const double apo = cbrt(9.0 * 3.14159265358979323846 * w * R * R / (8.0 * E));
+    const double pd[3] = {R, 0, 0};
+    int i, k, accepted = 0, refused = 0;
+    double worst = 0.0;
+    (void)st;
+    for (i = 0; i < (int)(sizeof f / sizeof f[0]); i++) {
+        mdr_table_f64 t64;
+        mdr_table_q31 tq;
+        mdr_engine_f64 e;
+        mdr_engine_q31 q;
+        double L, M, D0, lsb, po64 = 0.0, poq = 0.0;
+        mdr_status stq;
+        {
+            mdr_contact_f64 c;
+            assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, pd, E, w), MDR_OK);
+            assert_int_equal(mdr_table_init_profile_f64(&t64, nf, 256, &c, f[i] * apo), MDR_OK);
+        }
+        assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+        L = (double)tq.L + (double)tq.L_lo;
+        M = (double)tq.gmax * ((double)tq.Dg / 1073741824.0) + sqrt(2.0 * 3.14159265358979323846 * w / E * L);
+        D0 = (double)tq.Dg * (M > (double)tq.Dg ? pow(2.0, ceil(log2(M)) - log2((double)tq.Dg)) : 1.0);
+        lsb = Fpo / (2.0 * E * L * D0 / 536870912.0);
+        stq = mdr_engine_init_q31_f64(&q, &tq, E, w, w, 0.0);
+        if (lsb < 0.99 * MDR_Q31_ADH_LSB) {
+            assert_int_equal(stq, MDR_E_PARAM);
+            assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, 0.0, 0.0, 0.0), MDR_OK);
+            refused++;
+            continue;
+        }
+        if (lsb > 1.01 * MDR_Q31_ADH_LSB) {
+            assert_int_equal(stq, MDR_OK);
+        } else if (stq != MDR_OK) {
+            continue; /* (at the limit either) */
+        }
+        assert_true(fabs((double)q.D0 - D0) <= 1e-6 * D0); /* (the unit worked out as init does) */
+        assert_int_equal(mdr_engine_init_f64(&e, &t64, E, w, w, 0.0), MDR_OK);
+        for (k = 0; k <= 4000; k++) {
+            const double u = k <= 1000 ? Fpo * k / 1000 : Fpo - 3.0 * Fpo * (k - 1000) / 3000;
+            const int32_t raw = (int32_t)lround(u / ((double)q.F0 / 536870912.0));
+            mdr_step_f64 o;
+            mdr_step_q31 oq;
+            assert_int_equal(mdr_engine_step_F_f64(&e, raw * ((double)q.F0 / 536870912.0), &o), MDR_OK);
+            assert_int_equal(mdr_engine_step_F_q31(&q, raw, &oq), MDR_OK);
+            if (o.event == MDR_EV_PULL_OFF) {
+                po64 = o.F0;
+            }
+            if (oq.event == MDR_EV_PULL_OFF) {
+                poq = oq.F0 * ((double)q.F0 / 536870912.0);
+            }
+        }
+        assert_true(po64 < 0.0 && poq < 0.0);
+        worst = fmax(worst, fabs(poq - po64) / ((double)q.F0 / 536870912.0));
+        assert_true(fabs(poq - po64) <= TOL_LSB * ((double)q.F0 / 536870912.0));
+        accepted++;
+    }
+    printf("  q31 engine's adhesion against the table's extent: %d accepted, %d refused (below %d LSB); worst "
+           "pull-off %.1f LSB (tolerance %.0f)\n",
+           accepted, refused, MDR_Q31_ADH_LSB, worst, TOL_LSB);
+    assert_true(accepted >= 3 && refused >= 2);
+}
 #endif /* MDR_TARGET_TEST */
 
 /* a paraboloid scene for the error and saturation tests */
@@ -488,6 +561,7 @@ int main(void)
         cmocka_unit_test(saturation),
         cmocka_unit_test(machine_band_near_end),
 #ifndef MDR_TARGET_TEST
+        cmocka_unit_test(adhesion_range),
         cmocka_unit_test(scenes_vs_ref),
 #endif
     };

@@ -44,6 +44,15 @@
  *     TOL_Q31_STEP = 32 LSB (measured 6.6: no ill-conditioned fold here);
  *     the same tolerance for a stiff machine's pinned band near a = L
  *     (scene_q31_stiff_top).
+ * The adhesion's resolution (scene_q31_adhesion_range: power laws n = 1 to
+ * 8, w_adv = w/2, a_max from 1.2 to 300 times the pull-off radius, under
+ * fixed load): init refuses (MDR_E_PARAM) exactly the ranges whose pull-off
+ * force lies below MDR_Q31_ADH_LSB LSB of F (computed here from the f64
+ * scene's fold and F0; 33 of the 64 ranges), and an accepted one pulls
+ * off like the f64 scene: one pull-off each, its force within TOL_Q31_PO =
+ * 2 LSB of F (measured 0.9 LSB, 4.1e-4 relative; before the check, n = 7 at
+ * ten times the radius lost its adhesion entirely: c_w 0, a separation at
+ * F = 0, and n = 8 at three times pulled off 3.7 % away).
  * Force only against every output (scene_force_only): the step's own paths
  * and the full tick give d and F bit for bit (tolerance 0) over dithered
  * cycles, f64, f32 and q31, with at least TICKS/40 ticks held right after
@@ -83,6 +92,7 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, the spring engine, scenes with events, every 
 #define TOL_Q31_EN 1e-5
 #define TOL_Q31_JKR 1.0
 #define TOL_Q31_STEP 32.0
+#define TOL_Q31_PO 2.0 /* LSB of F */
 
 static const double R = 1e-6, E = 1e6, W = 0.05;
 
@@ -877,35 +887,104 @@ static void scene_q31_stiff_top(void **state)
 
 /* A load's pull-off at a fold whose radius is below the resolution of x
  * (found by fuzz_step): a cone with very little adhesion (w = 1e-6 J/m^2
- * at E* = 5e11 Pa: the load's fold at a ~ 1e-12 L, x = a/L = 0 in Q1.30)
- * touched by a depth of 514 raw LSB, then pulled by a load of -1.73 F0.
- * The fold's depth u/x + g/(n+1) then divided by x = 0 (undefined: a
- * zero passed to the leading-zero count). The tick must be a pull-off to
- * separation as in the f64 scene at the same inputs. */
+ * at E* = 5e11 Pa: the load's fold at a ~ 1e-12 L, x = a/L = 0 in Q1.30),
+ * where the state's depth u/x + g/(n+1) divided by x = 0. Its pull-off
+ * force lies far below one LSB of F: init now refuses the scene
+ * (MDR_E_PARAM, the adhesion unresolved: MDR_Q31_ADH_LSB), so no fold that
+ * low is reached (the state's guard of x = 0 stays). */
 static void scene_q31_load_fold_unresolved(void **state)
 {
     mdr_contact_f64 c;
     mdr_scene_f64 s;
     mdr_scene_q31 q;
-    mdr_step_f64 o;
-    mdr_step_q31 oq;
     const double p[3] = {0.78196078431372551, 0, 0};
     (void)state;
     assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_CONE, p, 521971822043.56415, 1e-6), MDR_OK);
     assert_int_equal(mdr_scene_init_contact_f64(&s, &c, 2.1176470588235293e-07, 35776054287.813957, MDR_OUT_ALL, NULL),
                      MDR_OK);
-    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 0.78636642643426413), MDR_OK);
-    assert_int_equal(mdr_scene_step_d_q31(&q, 514, &oq), MDR_OK);
-    assert_int_equal(q.contact, 1);
-    assert_int_equal(mdr_scene_step_d_f64(&s, 514 * (q.D0 / 536870912.0), &o), MDR_OK);
-    assert_int_equal(s.contact, 1);
-    assert_int_equal(mdr_scene_step_F_q31(&q, -931109738, &oq), MDR_OK);
-    assert_int_equal(mdr_scene_step_F_f64(&s, -931109738 * (q.F0 / 536870912.0), &o), MDR_OK);
-    printf("  q31 scene, a load's pull-off below the resolution of x: event %d (f64 %d), contact %d\n", (int)oq.event,
-           (int)o.event, (int)q.contact);
-    assert_int_equal(oq.event, o.event);
-    assert_int_equal(q.contact, 0);
-    assert_int_equal(s.contact, 0);
+    assert_int_equal(mdr_scene_init_q31_f64(&q, &s, 0.78636642643426413), MDR_E_PARAM);
+}
+
+/* The adhesion's resolution against a_max (tolerances at the top): a power
+ * law g = C x^n (C = 0.1 (10 um)^(1-n)), E* = 1e6 Pa, w = 0.05 J/m^2,
+ * w_adv = w/2, a_max = f a_po (a_po the f64 scene's pull-off radius under
+ * fixed load); L and F0 of the q31 scene worked out here as its init
+ * documents them (L = a_s 4^k, the least >= a_max; D0 = D_s 2^j, the least
+ * power of two >= g(L) + dl_w(L); F0 = F_s (L/a_s) 2^j), the pull-off
+ * force in LSB of F from the f64 scene's. Then under fixed load: touch,
+ * press to 2 |F_po|, pull to -2 |F_po| in 4000 ticks, both scenes at the
+ * same raw control. */
+static void scene_q31_adhesion_range(void **state)
+{
+    static const double f[] = {1.2, 2.0, 3.0, 5.0, 10.0, 30.0, 100.0, 300.0};
+    int n, i, accepted = 0, refused = 0;
+    double worst = 0.0, worst_rel = 0.0;
+    (void)state;
+    for (n = 1; n <= MDR_POWERLAW_N_MAX; n++) {
+        for (i = 0; i < (int)(sizeof f / sizeof f[0]); i++) {
+            const double pl[3] = {0.1 * pow(10e-6, 1 - n), n, 0};
+            mdr_contact_f64 c;
+            mdr_scene_f64 s;
+            mdr_scene_q31 q;
+            double apo, amax, L, tL = 1.0, gL, M, D0, F0, Fpo, lsb, po64 = 0.0, poq = 0.0;
+            int st, k, ev64 = 0, evq = 0;
+            assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_POWERLAW, pl, E, W), MDR_OK);
+            assert_int_equal(mdr_scene_init_contact_f64(&s, &c, W / 2, 0.0, MDR_OUT_ALL, NULL), MDR_OK);
+            apo = s.as * s.tf[0] * s.tf[0];
+            amax = f[i] * apo;
+            for (L = s.as; L < amax; L *= 4.0) {
+                tL *= 2.0;
+            }
+            for (; L / 4.0 >= amax; L /= 4.0) {
+                tL /= 2.0;
+            }
+            gL = pow(tL, 2.0 * n);
+            M = gL + s.gw * tL;
+            D0 = s.Ds * pow(2.0, ceil(log2(M)));
+            F0 = s.Fs * (L / s.as) * (D0 / s.Ds);
+            Fpo = s.uf[0] * s.Fs; /* (< 0) */
+            lsb = -Fpo / (F0 / 536870912.0);
+            st = mdr_scene_init_q31_f64(&q, &s, amax);
+            if (lsb < MDR_Q31_ADH_LSB * 0.99) {
+                assert_int_equal(st, MDR_E_PARAM);
+                refused++;
+                continue;
+            }
+            if (lsb > MDR_Q31_ADH_LSB * 1.01) {
+                assert_int_equal(st, MDR_OK);
+            } else if (st != MDR_OK) { /* (at the limit either) */
+                continue;
+            }
+            assert_true(fabs(q.F0 - F0) <= 1e-6 * F0); /* (the units worked out as init does) */
+            for (k = 0; k <= 4000; k++) {
+                const double u = k <= 1000 ? -2.0 * Fpo * k / 1000 : -2.0 * Fpo + 4.0 * Fpo * (k - 1000) / 3000;
+                const int32_t raw = (int32_t)lround(u / (q.F0 / 536870912.0));
+                mdr_step_f64 o;
+                mdr_step_q31 oq;
+                assert_int_equal(mdr_scene_step_F_f64(&s, raw * (q.F0 / 536870912.0), &o), MDR_OK);
+                assert_int_equal(mdr_scene_step_F_q31(&q, raw, &oq), MDR_OK);
+                if (o.event == MDR_EV_PULL_OFF) {
+                    assert_int_equal(ev64, 0);
+                    ev64 = k;
+                    po64 = o.F0;
+                }
+                if (oq.event == MDR_EV_PULL_OFF) {
+                    assert_int_equal(evq, 0);
+                    evq = k;
+                    poq = oq.F0 * (q.F0 / 536870912.0);
+                }
+            }
+            assert_true(ev64 > 1000 && evq > 1000);
+            worst = fmax(worst, fabs(poq - po64) / (q.F0 / 536870912.0));
+            worst_rel = fmax(worst_rel, fabs(poq - po64) / fabs(po64));
+            assert_true(fabs(poq - po64) <= TOL_Q31_PO * (q.F0 / 536870912.0));
+            accepted++;
+        }
+    }
+    printf("  q31 scene's adhesion against a_max: %d ranges accepted, %d refused (below %d LSB); worst pull-off "
+           "%.1f LSB (tolerance %.0f), %.1e relative\n",
+           accepted, refused, MDR_Q31_ADH_LSB, worst, TOL_Q31_PO, worst_rel);
+    assert_true(accepted >= 2 * MDR_POWERLAW_N_MAX && refused >= 2 * MDR_POWERLAW_N_MAX);
 }
 
 /* bad input: named errors, the scene unchanged; saturation flagged */
@@ -1034,6 +1113,7 @@ int main(void)
         cmocka_unit_test(scene_force_only),
         cmocka_unit_test(scene_q31_stiff_top),
         cmocka_unit_test(scene_q31_load_fold_unresolved),
+        cmocka_unit_test(scene_q31_adhesion_range),
         cmocka_unit_test(scene_q31_errors),
 #endif
     };

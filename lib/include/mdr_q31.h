@@ -50,6 +50,13 @@
 /** Sticky flag of the q31 engine: an input or a result saturated. */
 #define MDR_FLAG_SAT 4u
 
+/** The least resolution of the adhesion (w > 0) a q31 init accepts: the
+ *  pull-off force under fixed load in LSB of F (Q2.29 of F0); below it
+ *  MDR_E_PARAM (a range so far above the pull-off radius that F0 makes
+ *  the adhesion rounding noise). About half an LSB is the pull-off's
+ *  error, so an accepted one is within ~5e-4 relative. */
+#define MDR_Q31_ADH_LSB 1024
+
 /** One unit in a Q1.30 resp. Q2.29 format (raw value of 1.0). */
 #define MDR_Q30_ONE ((int32_t)1 << 30)
 #define MDR_Q29_ONE ((int32_t)1 << 29)
@@ -200,7 +207,11 @@ mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
  * @param[in] k_m  machine stiffness [N/m], 0 for none; with a machine
  *                 kappa = 2 E* L / k_m must be <= 2^16 (the relative error
  *                 of the machine's compliance is <= 2^-30 (1 + kappa))
- * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM, MDR_E_CONTROL
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (E, w, w_adv as
+ *         mdr_engine_init_f32; or, with w > 0, a table so far beyond the
+ *         pull-off radius that the pull-off force under fixed load, over
+ *         the table's nodes, is below MDR_Q31_ADH_LSB LSB of F: the
+ *         adhesion unresolved), MDR_E_CONTROL
  *         (k_m < 0 or kappa > 2^16), MDR_E_SIZE (table header invalid),
  *         MDR_E_OVERFLOW (D0 beyond 2^60 Dg, or a unit D0, F0 beyond float
  *         range)

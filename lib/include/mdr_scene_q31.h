@@ -101,7 +101,9 @@ typedef struct {
  *                   under fixed load, a little above the float scene's
  *                   a_s tf[0]^2)
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE (a_max), MDR_E_PARAM (a_max
- *         <= 0 or below a retraction fold), MDR_E_CONTROL (kappa =
+ *         <= 0, below a retraction fold, or so far above it that the
+ *         pull-off force is below MDR_Q31_ADH_LSB LSB of F: with w > 0;
+ *         the adhesion unresolved), MDR_E_CONTROL (kappa =
  *         2 E* L/k_m > 2^16), MDR_E_OVERFLOW (a unit beyond float range,
  *         or g(L)/D0 below 2^-30: a_max far below the adhesive range)
  */
