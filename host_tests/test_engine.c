@@ -203,6 +203,50 @@ static void paraboloid_pull_off(void **st)
     }
 }
 
+/* The jump-in at first touch under fixed load (w_adv = w) whose landing
+ * lies inside spring 0: 2 and 4 springs to 12 and 20 um, 1024 springs to
+ * 5 mm (h = 4.9 um), against 4 springs to 12 um (landing beyond spring 0).
+ * At t = 0 dU/dt is 0 under load whatever the adhesion, and the f32 and
+ * f64 engines took the touch point for stable: the scan found the landing
+ * as a plain root, "contact" with no jump (found by a helper attacking the
+ * engines; the q31 engine had it right). The event must be a jump-in from
+ * a = 0 landing at the JKR radius of F = 0, a = (9 pi w R^2 / (2 E*))^(1/3)
+ * (seed 4.36 with F = 0), to TOL_X64 / TOL_X32 (spring 0 of the
+ * paraboloid's table is exact). */
+static void jump_in_inside_spring_0(void **st)
+{
+    static const struct {
+        uint16_t n;
+        double L;
+    } c[] = {{2, 12e-6}, {4, 20e-6}, {1024, 5e-3}, {4, 12e-6}};
+    const double a1 = cbrt(9.0 * PI_ * JW * JR * JR / (2.0 * JE));
+    const double pd[3] = {JR, 0, 0};
+    const float pf[3] = {(float)JR, 0, 0};
+    mdr_table_f64 t64;
+    mdr_table_f32 t32;
+    mdr_engine_f64 e;
+    mdr_engine_f32 f;
+    mdr_step_f64 o;
+    mdr_step_f32 o32;
+    int i;
+    (void)st;
+    for (i = 0; i < (int)(sizeof c / sizeof c[0]); i++) {
+        table64(&t64, MDR_PROFILE_PARABOLOID, pd, c[i].n, c[i].L);
+        table32(&t32, MDR_PROFILE_PARABOLOID, pf, c[i].n, (float)c[i].L);
+        assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, JW, 0), MDR_OK);
+        assert_int_equal(mdr_engine_step_F_f64(&e, 1e-7, &o), MDR_OK);
+        assert_int_equal(o.event, MDR_EV_JUMP_IN);
+        assert_int_equal(o.jumps, 1);
+        rel_le(o.a0, 0.0, 0, 0.0, "jump-in from a = 0 (f64)");
+        rel_le(o.a1, a1, 0, TOL_X64, "jump-in landing at F = 0 (f64)");
+        assert_int_equal(mdr_engine_init_f32(&f, &t32, (float)JE, (float)JW, (float)JW, 0), MDR_OK);
+        assert_int_equal(mdr_engine_step_F_f32(&f, 1e-7f, &o32), MDR_OK);
+        assert_int_equal(o32.event, MDR_EV_JUMP_IN);
+        assert_int_equal(o32.jumps, 1);
+        rel_le(o32.a1, a1, 0, TOL_X32, "jump-in landing at F = 0 (f32)");
+    }
+}
+
 /* A table so coarse that the pull-off lies inside spring 0 (8 springs over
  * 50 um, h = 6.25 um; JKR grips pull-off at a = 1.25 um, load at 2.6 um,
  * the equilibrium at d = 0 at a = (2 pi w R^2/E*)^(1/3) = 3.15 um). Spring 0
@@ -1163,6 +1207,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(paraboloid_pull_off),
         cmocka_unit_test(pull_off_inside_spring_0),
+        cmocka_unit_test(jump_in_inside_spring_0),
         cmocka_unit_test(paraboloid_machine),
         cmocka_unit_test(loading_branches),
         cmocka_unit_test(retraction_is_equilibrium),
