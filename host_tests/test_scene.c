@@ -987,6 +987,35 @@ static void scene_q31_adhesion_range(void **state)
     assert_true(accepted >= 2 * MDR_POWERLAW_N_MAX && refused >= 2 * MDR_POWERLAW_N_MAX);
 }
 
+/* A pull-off by a load at the documented range's end (-2 units, raw
+ * -2^30, and one LSB inside it): every output in range, so no saturation
+ * flag (the slow path used to evaluate the pinned relation at the control
+ * before it knew the edge moves, and its d saturated; found by a helper).
+ * The same pull-off as from a load just past it (-1e6 raw). */
+static void scene_q31_pull_at_range_end(void **state)
+{
+    static const int32_t v[] = {-1073741824, -1073741823, -1000000};
+    mdr_scene_f32 s;
+    mdr_scene_q31 q;
+    mdr_step_q31 o, ref;
+    int i;
+    (void)state;
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 10e-6f, 1e6f, 0.05f, 0.025f, 0.f, MDR_OUT_ALL, NULL), MDR_OK);
+    for (i = 2; i >= 0; i--) {
+        assert_int_equal(mdr_scene_init_q31_f32(&q, &s, 20e-6f), MDR_OK);
+        assert_int_equal(mdr_scene_step_F_q31(&q, 20000000, &o), MDR_OK);
+        assert_int_equal(mdr_scene_step_F_q31(&q, v[i], &o), MDR_OK);
+        assert_int_equal(o.event, MDR_EV_PULL_OFF);
+        assert_int_equal(q.flags, 0);
+        if (i == 2) {
+            ref = o;
+        }
+        assert_int_equal(o.d, ref.d);
+        assert_int_equal(o.F0, ref.F0);
+        assert_int_equal(o.d0, ref.d0);
+    }
+}
+
 /* bad input: named errors, the scene unchanged; saturation flagged */
 static void scene_q31_errors(void **state)
 {
@@ -1114,6 +1143,7 @@ int main(void)
         cmocka_unit_test(scene_q31_stiff_top),
         cmocka_unit_test(scene_q31_load_fold_unresolved),
         cmocka_unit_test(scene_q31_adhesion_range),
+        cmocka_unit_test(scene_q31_pull_at_range_end),
         cmocka_unit_test(scene_q31_errors),
 #endif
     };
