@@ -144,6 +144,7 @@ static const char *fit_status_name(mdr_status st)
     case MDR_E_DEGENERATE: return "MDR_E_DEGENERATE";
     case MDR_E_JUMPS: return "MDR_E_JUMPS";
     case MDR_E_PINNED: return "MDR_E_PINNED";
+    case MDR_E_MISFIT: return "MDR_E_MISFIT";
     default: return "MDR_E_OTHER";
     }
 }

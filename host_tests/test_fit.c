@@ -891,6 +891,163 @@ static void test_jumps(void **state)
     assert_int_equal(mdr_fit_model_f64(&c, 1.0, 0.0, 0.0, MDR_FIT_RETRACT, z, 3u, F), MDR_E_JUMPS);
 }
 
+/* ---- answers the fit must refuse ------------------------------------------- */
+
+/* fold radius for any parameters (the contact radius may exceed R): the
+ * bracket grown until dz/da > 0, then geometric bisection */
+static double jkr_fold_any(const jkr_par *p)
+{
+    double lo = 1e-30, hi = p->R, dz;
+    int i;
+    for (jkr_z(p, hi, NULL, &dz); !(dz > 0); jkr_z(p, hi, NULL, &dz)) {
+        hi *= 2;
+    }
+    for (i = 0; i < 400; i++) {
+        double mid = sqrt(lo * hi);
+        jkr_z(p, mid, NULL, &dz);
+        if (dz > 0) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return hi;
+}
+
+/* A retract of n + 1 points uniform in z' from up s down to the fold's
+ * z' - below s, s = max(|z'_fold|, a_fold^2/R) (the span of the
+ * adversarial tester's generator), base offset z0, noise sig; *Fpo the
+ * fold's force. Returns the number of points. */
+static int jkr_span(const jkr_par *p, double up, double below, int n, double z0, double sig, double *z, double *F,
+                    double *Fpo)
+{
+    double af = jkr_fold_any(p), Ff, zf = jkr_z(p, af, &Ff, NULL), s, top, bot;
+    int i;
+    s = fabs(zf) > af * af / p->R ? fabs(zf) : af * af / p->R;
+    top = up * s;
+    bot = zf - below * s;
+    for (i = 0; i <= n; i++) {
+        double zp = top - (top - bot) * i / n, f = 0.0;
+        if (zp > zf) {
+            jkr_z(p, jkr_a(p, zp, af), &f, NULL);
+        }
+        z[i] = zp + z0;
+        F[i] = f + (sig > 0 ? sig * gauss() : 0.0);
+    }
+    *Fpo = Ff;
+    return n + 1;
+}
+
+/* The fit from poor first guesses (E0, w0 over 1e3..1e14 Pa and
+ * 1e-3..10 J/m^2) on a noise-free closed-form curve (regime 1): every
+ * answer is the truth (TOL_RT) or a named refusal. Before: from E0 = 1e12,
+ * w0 = 0.1, E* = 6.6e-21 Pa (a pull-off radius of metres, z0 at 1e9 m,
+ * rms 45 % of the pull-off force), and from 1e13, 2: E* = 1e51 Pa (the
+ * rigid limit, regime DMT), both status ok. */
+static void test_refuse_bad_start(void **state)
+{
+    const jkr_par *p = &regimes[1];
+    mdr_contact_f64 c = paraboloid64(p->R);
+    mdr_fit_opts_f64 o;
+    double Fpo, z0 = 1e-6;
+    int n = NNOISE, last = jkr_curve(p, z0, 0.0, n, zs, Fs, 0, &Fpo), ie, iw, ok = 0, refused = 0;
+    (void)state;
+    worst = 0;
+    mdr_fit_defaults_f64(&o, p->km);
+    for (ie = 3; ie <= 14; ie++) {
+        for (iw = -3; iw <= 1; iw++) {
+            mdr_fit_result_f64 r = poisoned(), pz = poisoned();
+            mdr_status st;
+            char what[96];
+            o.E0 = pow(10.0, ie);
+            o.w0 = pow(10.0, iw);
+            snprintf(what, sizeof what, "from E0 = %.0e, w0 = %.0e", o.E0, o.w0);
+            st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
+            if (st == MDR_OK) {
+                check_fit64(&r, p->E, p->w, z0, 0.0, zs[0] - zs[last], fabs(Fpo), TOL_RT, what);
+                ok++;
+            } else {
+                if (!(st == MDR_E_MISFIT || st == MDR_E_DEGENERATE || st == MDR_E_FITCAP)) {
+                    fail_msg("%s: status %d (%s)", what, st, mdr_status_str(st));
+                }
+                assert_memory_equal(&r, &pz, sizeof r); /* out untouched on error */
+                refused++;
+            }
+        }
+    }
+    print_message("poor first guesses: %d the truth (worst %.2g), %d refused\n", ok, worst, refused);
+}
+
+/* z in nanometres (a unit slip: every z times 1e9) with k_m in N/m: the
+ * indentation 1e9 times larger, the lever's bend nothing, and the best
+ * model misses the curve. Closed-form curves of regime 1 spanning up s
+ * above the contact to below s under the fold (s = |z'_fold|, jkr_span).
+ * Before: E* = 1e-7 to 2.5e-7 Pa, a pull-off radius of 0.3 mm on a 20 nm
+ * tip, the model's pull-off force 1/3 of the data's, status ok (f64 and
+ * f32). Now MDR_E_MISFIT. */
+static void test_refuse_units(void **state)
+{
+    static const double ups[3] = {0.5, 1.0, 2.0}, belows[2] = {0.3, 2.0};
+    const jkr_par *p = &regimes[1];
+    mdr_contact_f64 c = paraboloid64(p->R);
+    mdr_contact_f32 c32;
+    mdr_fit_opts_f64 o;
+    mdr_fit_opts_f32 o32;
+    float pp[3] = {(float)p->R, 0, 0};
+    int i, u, b;
+    (void)state;
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
+    mdr_fit_defaults_f64(&o, p->km);
+    mdr_fit_defaults_f32(&o32, (float)p->km);
+    for (u = 0; u < 3; u++) {
+        for (b = 0; b < 2; b++) {
+            mdr_fit_result_f32 r32;
+            double Fpo;
+            int n = jkr_span(p, ups[u], belows[b], 1000, 1e-6, 0.0, zs, Fs, &Fpo);
+            char what[64];
+            for (i = 0; i < n; i++) {
+                zs[i] *= 1e9;
+                zs32[i] = (float)zs[i];
+                Fs32[i] = (float)Fs[i];
+            }
+            snprintf(what, sizeof what, "z in nm (up %.1f, below %.1f)", ups[u], belows[b]);
+            expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_MISFIT, what);
+            assert_int_equal(mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r32),
+                             MDR_E_MISFIT);
+        }
+    }
+}
+
+/* E* runs off by itself (the default first guess) toward the rigid limit
+ * where a lever much softer than the contact leaves E* undetermined: the
+ * adversarial tester's curve (JKR, E* = 1.92e11 Pa, w = 4.47 J/m^2,
+ * R = 29.8 um, k_m = 0.08 N/m: the contact 2e6 times stiffer than the
+ * lever). Before: E* = 5.6e42 Pa +- 3.4e51, regime DMT, status ok. Now
+ * MDR_E_DEGENERATE (relative error of E* above 1), f64 and f32. */
+static void test_refuse_runaway(void **state)
+{
+    const jkr_par p = {2.97698e-5, 1.92274e11, 4.47239, 0.0799691};
+    mdr_contact_f64 c = paraboloid64(p.R);
+    mdr_contact_f32 c32;
+    mdr_fit_opts_f64 o;
+    mdr_fit_opts_f32 o32;
+    mdr_fit_result_f32 r32;
+    float pp[3] = {(float)p.R, 0, 0};
+    double Fpo;
+    int i, n = jkr_span(&p, 2.176, 0.9695, 1000, 1e-6, 0.0, zs, Fs, &Fpo);
+    (void)state;
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
+    mdr_fit_defaults_f64(&o, p.km);
+    mdr_fit_defaults_f32(&o32, (float)p.km);
+    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_DEGENERATE, "soft lever runaway");
+    for (i = 0; i < n; i++) {
+        zs32[i] = (float)zs[i];
+        Fs32[i] = (float)Fs[i];
+    }
+    assert_int_equal(mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r32),
+                     MDR_E_DEGENERATE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -907,6 +1064,9 @@ int main(void)
         cmocka_unit_test(test_tabor),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_jumps),
+        cmocka_unit_test(test_refuse_bad_start),
+        cmocka_unit_test(test_refuse_units),
+        cmocka_unit_test(test_refuse_runaway),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

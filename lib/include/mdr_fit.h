@@ -46,6 +46,13 @@
 /** A step (pull-off jump) or a force (contact) counts when it exceeds this
  *  many standard deviations of the noise of the free part. */
 #define MDR_FIT_NOISE_SIGMAS 6.0
+/** The full fit's answer must reproduce the curve: an rms residual above
+ *  what counts as a force (MDR_FIT_NOISE_SIGMAS noise widths and the
+ *  forces' rounding) plus this fraction of the retract's largest force is
+ *  refused (MDR_E_MISFIT). 1e-3: ten times the worst relative error the
+ *  fit documents for its own arithmetic (f32, 1e-4), so no rounding or
+ *  resolution of the model reaches it. */
+#define MDR_FIT_MISFIT_REL 1e-3
 
 /** Workspace of mdr_fit_curve_<type>() for a curve of n points, in elements
  *  of the arithmetic's type (float or double): the contact radius of every

@@ -108,7 +108,14 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  * every retract point in (ln E*, ln w, z0, F_b), analytic Jacobian,
  * Marquardt scaling, at most MDR_FIT_ITER_MAX iterations. (4) Standard
  * errors, the model's pull-off, the Tabor parameter and the regime.
- * (5) opts->approach: w_adv >= 0 fitted to the approach points.
+ * MDR_FIT_FULL answers only where the model reproduces the curve (rms
+ * residual at most MDR_FIT_NOISE_SIGMAS noise widths plus
+ * MDR_FIT_MISFIT_REL of the largest retract force, else MDR_E_MISFIT) and
+ * the data determine E* and w (relative standard errors below 1, else
+ * MDR_E_DEGENERATE): a minimum Levenberg-Marquardt converges to from a
+ * poor first guess, z not in metres, or E* run off toward the rigid limit
+ * is refused, never answered. (5) opts->approach: w_adv >= 0 fitted to
+ * the approach points.
  *
  * @param[in]  tip   the profile, from mdr_contact_init_<type>() (its E* and w
  *                   are not used); every kind but the flat punch
@@ -132,8 +139,12 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);
  *   fits that fail: MDR_E_FITCAP (iteration cap, or a pinned top's end not
  *   settled in 8 refits), MDR_E_DEGENERATE (the
- *   data do not determine the four parameters, or the two-point equations
- *   have no solution), MDR_E_JUMPS (the retract jumps before the pull-off),
+ *   data do not determine the four parameters: singular equations, or a
+ *   relative standard error of E* or w of 1 or more; or the two-point
+ *   equations have no solution), MDR_E_MISFIT (the full fit only: the
+ *   fitted model does not reproduce the curve, its rms residual beyond
+ *   MDR_FIT_NOISE_SIGMAS noise widths plus MDR_FIT_MISFIT_REL of the
+ *   force scale), MDR_E_JUMPS (the retract jumps before the pull-off),
  *   MDR_E_PINNED (the full fit only: the retract straight to its pull-off
  *   and a line explains it better than the receding branch: a contact
  *   pinned until it ruptures; or, in noisy data, straight within its noise

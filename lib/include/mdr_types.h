@@ -91,6 +91,12 @@ typedef int8_t mdr_status;
  *  neither the caller (opts.unpinned) nor the approach (w_adv within
  *  MDR_FIT_NOISE_SIGMAS errors of w) rules it out. */
 #define MDR_E_PINNED (-22)
+/** Fit: the fitted model does not reproduce the curve: its rms residual
+ *  exceeds what counts as a force in the data (MDR_FIT_NOISE_SIGMAS noise
+ *  widths) by more than MDR_FIT_MISFIT_REL of the curve's force scale. A
+ *  minimum away from the answer (a poor first guess), units that are not
+ *  SI (z in nm), or a curve the model does not describe. */
+#define MDR_E_MISFIT (-23)
 
 /** Profile kinds (uint8_t values; the meaning of p[0..2] for each). */
 #define MDR_PROFILE_PARABOLOID 1u /**< f = r^2/(2R);          p = {R}            */

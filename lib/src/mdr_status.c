@@ -30,6 +30,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_DEGENERATE: return "the data do not determine the parameters";
     case MDR_E_JUMPS: return "the retract jumps before the pull-off (one-branch model does not apply)";
     case MDR_E_PINNED: return "the retract is straight to its pull-off: pinned to its rupture, or a pinned top its noise may hide (fit with the approach, or state unpinned)";
+    case MDR_E_MISFIT: return "the fitted model does not reproduce the curve (residuals beyond its noise): a poor first guess, units not SI, or a curve the model does not describe";
     default: return "unknown status";
     }
 }

@@ -107,7 +107,10 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     MDR_E_NOPULLOFF (never separates), MDR_E_ORDER (z increases within the
     retract), MDR_E_NONFINITE (a NaN or inf sample, .index its position),
     MDR_E_PARAM (k_machine, z_e, E0/w0), MDR_E_KIND (flat punch),
-    MDR_E_FITCAP, MDR_E_DEGENERATE, MDR_E_JUMPS, MDR_E_PINNED (a retract
+    MDR_E_FITCAP, MDR_E_DEGENERATE (the data do not determine E* or w:
+    a relative standard error of 1 or more), MDR_E_MISFIT (the fitted model
+    does not reproduce the curve: a poor E0/w0, z not in metres), MDR_E_NOCONV,
+    MDR_E_JUMPS, MDR_E_PINNED (a retract
     straight to its pull-off: pinned until it ruptures, or, in noisy data
     without unpinned=True, a pinned top the noise hides), MDR_E_RADIUS, ...
     """
