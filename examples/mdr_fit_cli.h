@@ -26,7 +26,8 @@
  *   --E0 --w0  first guesses (default: the two-point method)
  *   --approach also fit w_adv to the approach part (JSON w_adv, w_adv_err)
  *   --unpinned the retract recedes from its top (no adhesion hysteresis):
- *              a retract straight within its noise to the pull-off is
+ *              no pinned top is looked for (every sample fitted), and a
+ *              retract straight within its noise to the pull-off is
  *              fitted instead of refused (MDR_E_PINNED)
  *   --jobs     threads for a map (default: every core)
  *   --model F  (with --curve) also write the fitted model: CSV z,F,F_model,

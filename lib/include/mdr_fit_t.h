@@ -47,10 +47,14 @@ typedef struct {
     uint8_t approach; /**< 1: also fit w_adv to the approach part (E*, z0, F_b
                            held at the retract's values); default 0 */
     uint8_t unpinned; /**< 1: the caller knows the retract recedes from its top
-                           (no adhesion hysteresis: w_adv = w, no pinned top);
-                           a retract straight within its noise to the pull-off
-                           is then fitted as a receding branch instead of
-                           refused (MDR_E_PINNED); default 0 */
+                           (no adhesion hysteresis: w_adv = w, no pinned top):
+                           no pinned top is looked for, every retract sample
+                           is fitted (n_pinned = 0), and a retract straight
+                           within its noise to the pull-off is fitted as a
+                           receding branch instead of refused as one a pinned
+                           top could hide in (MDR_E_PINNED; a line that
+                           explains it better than the branch is still
+                           refused); default 0 */
 } MDR_SFX(mdr_fit_opts);
 
 /** Result of a fit (SI). */

@@ -99,8 +99,10 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     E0, w0: first guesses [Pa, J/m^2], both or neither.
     approach: also fit w_adv to the approach part (E*, z0, F_base held).
     unpinned: the caller knows the retract recedes from its top (no
-        adhesion hysteresis, w_adv = w): a retract straight within its noise
-        to the pull-off is fitted instead of refused (MDR_E_PINNED).
+        adhesion hysteresis, w_adv = w): no pinned top is looked for (every
+        retract sample is fitted, n_pinned = 0), and a retract straight
+        within its noise to the pull-off is fitted instead of refused
+        (MDR_E_PINNED).
 
     Returns a FitResult. A curve or an argument the library refuses raises
     mdr.Error with its status: MDR_E_FEW (too few points), MDR_E_NOCONTACT,
