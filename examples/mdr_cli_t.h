@@ -210,22 +210,33 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         return cli_fail("engine (--E, --w, --w-adv, --k-machine)", st);
     }
     if (A->q31) {
-        /* the path within the q31 input range (+-2 units): its vertices bound
-         * every interpolated value; the conversion names NaN, inf and the
-         * int32 overflow (mdr_q31_from_si: no NaN converted to an integer) */
+        /* the path within the q31 input range (+-2 units), by the very
+         * conversion the step makes (mdr_host_q31_raw(): the value in double
+         * over the double unit, rounded; it also names NaN and inf): each
+         * vertex, then each tick's value (the interpolation may round a
+         * vertex's value by an ulp) */
         const uint8_t q = A->control == MDR_CONTROL_GRIPS ? MDR_Q_D
                           : A->control == MDR_CONTROL_LOAD ? MDR_Q_F : MDR_Q_Z;
         const double unit = q == MDR_Q_D ? Q.D0 : q == MDR_Q_F ? Q.F0 : Q.Z0;
+        const char *un = q == MDR_Q_D ? "D0" : q == MDR_Q_F ? "F0" : "Z0", *si = q == MDR_Q_F ? "N" : "m";
+        int32_t raw = 0;
         for (seg = 0; seg < A->npath; seg++) {
-            int32_t raw = 0;
-            st = mdr_q31_from_si(&Q.e, q, (float)A->path[seg], &raw);
-            if (st != MDR_OK || raw > MDR_Q30_ONE || raw < -MDR_Q30_ONE) {
+            if (mdr_host_q31_raw(A->path[seg], unit, &raw) != MDR_OK) {
                 free(qnodes);
                 free(nodes);
                 return usage_errf("--path value %ld (%.9g %s): outside the q31 input range +-2 %s = +-%.9g %s",
-                                  seg + 1, A->path[seg], q == MDR_Q_F ? "N" : "m",
-                                  q == MDR_Q_D ? "D0" : q == MDR_Q_F ? "F0" : "Z0", 2.0 * unit,
-                                  q == MDR_Q_F ? "N" : "m");
+                                  seg + 1, A->path[seg], si, un, 2.0 * unit, si);
+            }
+        }
+        for (seg = 0; seg + 1 < A->npath; seg++) {
+            for (j = seg == 0 ? 0 : 1; j <= A->steps; j++) {
+                const double v = mdr_host_path_value(A->path, A->steps, seg, j);
+                if (mdr_host_q31_raw(v, unit, &raw) != MDR_OK) {
+                    free(qnodes);
+                    free(nodes);
+                    return usage_errf("--path segment %ld, tick %ld (%.17g %s): outside the q31 input range "
+                                      "+-2 %s = +-%.17g %s", seg + 1, j, v, si, un, 2.0 * unit, si);
+                }
             }
         }
     }

@@ -379,6 +379,19 @@ $MDR cycle $P --control grips --path 0,$(awk -v d="$D2" 'BEGIN { printf "%.9g", 
     --steps-per-segment 4 --arith q31 >/dev/null 2>&1 && ok || bad "q31 path within +-2 D0 (2 D0 = $D2) runs"
 refuse 'outside the q31 input range' cycle $P --control grips --path 0,$(awk -v d="$D2" 'BEGIN { printf "%.9g", -1.05 * d }') \
     --a-max 2e-6 --steps-per-segment 4 --arith q31
+# the range check converts as the step does (in double, over the double
+# unit): the flat punch a0 = 2 um has F0 = 2E* a0 D0 = 3.814697265625e-6 N;
+# 2 F0 itself runs, a value just above it is refused before step 0 (not
+# stepped until the step's own conversion fails)
+FP="--profile flatpunch --a0 2e-6 --E 1e6 --w 0.05 --control load --steps-per-segment 10 --arith q31"
+$MDR cycle $FP --path 0,7.62939453125e-06,-7.62939453125e-06 >/dev/null 2>&1 && ok || bad "q31 path at exactly 2 F0 runs"
+refuse '^mdr: --path value 2 \(7.62939454e-06 N\): outside the q31 input range \+-2 F0 = \+-7.62939453e-06 N$' \
+    cycle $FP --path 0,7.62939454e-06,-7.62939454e-06
+refuse '^mdr: --path value 3 \(-7.62939454e-06 N\): outside the q31 input range' cycle $FP --path 0,1e-6,-7.62939454e-06
+# every tick converted, not only the vertices: a + (b - a) 13/13 rounds
+# this b (raw 2^30, just in range) one ulp up, to raw 2^30 + 1
+refuse '^mdr: --path segment 1, tick 13 \(7.62939453480271[0-9]*e-06 N\): outside the q31 input range' \
+    cycle ${FP/--steps-per-segment 10/--steps-per-segment 13} --path -3.898088070211341e-06,7.629394534802712e-06
 
 # tip files: bounded reads, errors with file:line, comma/tab/space separated
 start=$(date +%s)
