@@ -356,7 +356,10 @@ static long fit_order_line(const fit_curve *c)
 
 /* ---- one curve ------------------------------------------------------------ */
 
-/* --model: the data with the fitted model (f64) beside them */
+/* --model: the data with the fitted model (f64) beside them, written (and
+ * closed) before the JSON goes to stdout, so that a model that fails
+ * (exit 1), a file that cannot be opened (exit 2) or written (exit 1)
+ * leaves stdout empty */
 static int fit_write_model(const struct fit_args *A, const fit_curve *c)
 {
     mdr_contact_f64 tip;
@@ -364,6 +367,7 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
     size_t i, top = 0;
     mdr_status st = fit_tip_f64(A, &tip);
     FILE *fp;
+    int werr;
     if (Fm == NULL) {
         return usage_error("out of memory", NULL);
     }
@@ -398,7 +402,8 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
         fprintf(fp, "%.17g,%.17g,%.17g,%s\n", c->z[i], c->F[i], Fm[i], i < top ? "approach" : "retract");
     }
     free(Fm);
-    if (ferror(fp) || fclose(fp) != 0) {
+    werr = ferror(fp);
+    if (fclose(fp) != 0 || werr) {
         perror("mdr: --model");
         return 1;
     }
@@ -495,6 +500,11 @@ static int fit_curve_cmd(const struct fit_args *A)
     }
     (void)fit_one(A, c.z, c.F, c.n, &s, &c.res);
     free(s.buf);
+    /* the model file first: nothing on stdout if it fails */
+    if (c.res.st == MDR_OK && A->model != NULL && (rc = fit_write_model(A, &c)) != 0) {
+        fit_curve_free(&c);
+        return rc;
+    }
     json_begin(&j, stdout, A->f64);
     if (c.res.st != MDR_OK) {
         json_str(&j, "status", fit_status_name(c.res.st));
@@ -539,9 +549,8 @@ static int fit_curve_cmd(const struct fit_args *A)
     json_str(&j, "arith", A->f64 ? "f64" : "f32");
     json_str(&j, "status", "ok");
     fit_json_end(&j, A);
-    rc = A->model != NULL ? fit_write_model(A, &c) : 0;
     fit_curve_free(&c);
-    return rc;
+    return 0;
 }
 
 /* ---- a map: curves on threads, in the input's order -------------------- */

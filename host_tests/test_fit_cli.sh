@@ -151,6 +151,28 @@ out=$("$MDR" fit --curve "$TMP/nosep.csv" $TIP --k-machine 0.2)
 [ $? -eq 1 ] && ok || bad "a curve that never separates: exit 1"
 [ "$(key "$out" status)" = '"MDR_E_NOPULLOFF"' ] && ok || bad "never separates: status in $out"
 
+# --model FILE: the data beside the fitted model, one row each; a file that
+# cannot be opened (exit 2) or written (exit 1) leaves stdout empty (the
+# result JSON is not printed before the failure), one line on stderr
+out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --model "$TMP/model.csv") && [ -n "$(key "$out" E)" ] &&
+    ok || bad "--model exit: $out"
+[ "$(head -1 "$TMP/model.csv")" = "z,F,F_model,branch" ] && [ "$(wc -l <"$TMP/model.csv")" -eq "$(wc -l <"$TMP/c.csv")" ] &&
+    ok || bad "--model: header z,F,F_model,branch and a row per data row"
+failclean() { # failclean RC PATTERN ARGS...: exit RC, nothing on stdout, one stderr line matching PATTERN
+    local want=$1 pat=$2 out err rc
+    shift 2
+    out=$(timeout 60 "$MDR" "$@" 2>"$TMP/err")
+    rc=$?
+    err=$(cat "$TMP/err")
+    [ $rc -eq "$want" ] && [ -z "$out" ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] &&
+        printf '%s' "$err" | grep -Eq -- "$pat" && ok ||
+        bad "want exit $want, empty stdout, one line /$pat/: $* (rc $rc, stdout ${#out} chars, stderr '$err')"
+}
+failclean 2 '^mdr: cannot write: /nonexistent/x.csv$' fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --model /nonexistent/x.csv
+if [ -w /dev/full ]; then
+    failclean 1 '^mdr: --model: ' fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --model /dev/full
+fi
+
 # a map: curves in the input's order, one row each, threads give the same
 # rows as one thread; a curve without contact fails alone (exit 1)
 cycle "$TMP/m1.csv" 1e9 0.05 0.2 0 0 a1
