@@ -241,7 +241,17 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         }
     }
     if (A->summary != NULL) {
+        /* the summary's first byte written through at once: a file that
+         * cannot be written (/dev/full, a full disk) is refused here,
+         * before the CSV goes to stdout */
         sum = fopen(A->summary, "w");
+        if (sum != NULL) {
+            json_begin(&js, sum, CLI_F64);
+            if (fflush(sum) != 0 || ferror(sum)) {
+                (void)fclose(sum);
+                sum = NULL;
+            }
+        }
         if (sum == NULL) {
             free(qnodes);
             free(nodes);
@@ -331,7 +341,9 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         fprintf(stderr, "mdr: q31 inputs or results saturated (beyond +-2 units: D0 = %.9g m, "
                         "F0 = %.9g N)\n", Q.D0, Q.F0);
     }
-    json_begin(&js, sum != NULL ? sum : stderr, CLI_F64);
+    if (sum == NULL) {
+        json_begin(&js, stderr, CLI_F64);
+    }
     if (have_po) {
         json_num(&js, "pull_off_F", po.F0);
         json_num(&js, "pull_off_d", po.d0);
@@ -371,8 +383,14 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     json_key_only(&js, "d1");
     json_key_only(&js, "F1");
     json_end(&js, A);
-    if (sum != NULL && (fclose(sum) != 0)) {
-        rc = rc ? rc : usage_error("cannot write --summary", A->summary);
+    if (sum != NULL) {
+        const int werr = ferror(sum);
+        if (fclose(sum) != 0 || werr) {
+            /* the file took the first byte but not the rest (the disk filled
+             * during the run): a failure of the run, not a bad argument */
+            (void)usage_error("cannot write --summary", A->summary);
+            rc = rc ? rc : 1;
+        }
     }
     free(list);
     free(qnodes);

@@ -439,6 +439,11 @@ $MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 
 [ $? -eq 1 ] && [ "$(wc -l <"$TMP/err")" -eq 1 ] && grep -q '^mdr: step [0-9]* (value .*): .*raise --a-max' "$TMP/err" &&
     [ "$(key "$(cat "$TMP/s.json")" events)" = 1 ] && ok || bad "cycle --summary on a failure: $(cat "$TMP/err")"
 refuse 'cannot write --summary: /nonexistent/s.json' $CY --summary /nonexistent/s.json
+# a summary file that opens but takes no byte: refused before the CSV goes
+# to stdout (not exit 2 after the whole CSV)
+if [ -w /dev/full ]; then
+    refuse '^mdr: cannot write --summary: /dev/full$' $CY --summary /dev/full
+fi
 
 # units and inputs in every JSON object; G_rel (the energy release rate)
 for arith in f32 f64; do
