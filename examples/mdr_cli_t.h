@@ -73,6 +73,53 @@ static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab
     return 0;
 }
 
+/* Why a spring table has no q31 form, named on one line (exit 2):
+ * mdr_table_q31_from() refuses N not a power of two (MDR_E_SIZE) and, with
+ * MDR_E_OVERFLOW, a spring slope (g_{i+1} - g_i) N / Dg >= 8 (Q3.28: the
+ * profile too steep over the table, e.g. a sphere tabulated close to
+ * x = R, where g' grows without bound), a curvature term |b_i| = |q_i| 6 N / (L Dg) >= 2 (Q1.30: too few
+ * springs for the profile's curvature) or a length or depth beyond float's
+ * range (Dg: the least power of two >= max|g|). The two ratios are formed
+ * here again, in double, only to name the cause. */
+static int CLI_SFX(q31_table_fail)(const struct cli_args *A, const CLI_SFX(mdr_table) *tab, mdr_status st)
+{
+    const unsigned n = tab->n;
+    const double L = (double)tab->h * (double)n;
+    double gmax = 0.0, Dg = 1.0, smax = 0.0, bmax = 0.0;
+    unsigned i;
+    if (st != MDR_E_OVERFLOW) {
+        return cli_fail(st == MDR_E_SIZE ? "q31 table (--springs must be a power of two)" : "q31 table", st);
+    }
+    for (i = 0; i <= n; i++) {
+        const double g = (double)tab->node[i].g < 0.0 ? -(double)tab->node[i].g : (double)tab->node[i].g;
+        gmax = g > gmax ? g : gmax;
+    }
+    gmax = gmax > 0.0 ? gmax : L / 1024.0;
+    while (Dg < gmax && Dg < DBL_MAX / 2) {
+        Dg *= 2.0;
+    }
+    while (Dg / 2.0 >= gmax && Dg > DBL_MIN * 2) {
+        Dg /= 2.0;
+    }
+    for (i = 0; i < n; i++) {
+        const double dg = (double)tab->node[i + 1].g - (double)tab->node[i].g, q = (double)tab->node[i].q;
+        const double sl = (dg < 0.0 ? -dg : dg) * (double)n / Dg, b = (q < 0.0 ? -q : q) * 6.0 * (double)n / (L * Dg);
+        smax = sl > smax ? sl : smax;
+        bmax = b > bmax ? b : bmax;
+    }
+    if (smax / 8.0 >= bmax / 2.0 && smax >= 7.99) {
+        return usage_errf("q31 table: the profile is too steep over the table (spring slope %.3g >= 8 of "
+                          "Q3.28, in max|g| per spring); lower --a-max (%.9g m)%s",
+                          smax, L, A->kind == MDR_PROFILE_SPHERE ? ", further below the sphere's R" : "");
+    }
+    if (bmax >= 1.99) {
+        return usage_errf("q31 table: too few springs for the profile's curvature (curvature term %.3g >= 2 "
+                          "of Q1.30); raise --springs (%u) or lower --a-max (%.9g m)", bmax, n, L);
+    }
+    return usage_errf("q31 table: the table's length (%.9g m) or depth (%.9g m) is beyond the q31 formats "
+                      "or float's range", L, gmax);
+}
+
 /* mdr table: the table as C source (round-trip exact literals) on stdout or
  * in --output FILE.c, and the header declaring it (--header, or FILE.h next
  * to --output FILE.c), which the .c then includes. */
@@ -94,7 +141,7 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
             st = CLI_SFX(mdr_table_q31_from)(&tq, qn, &tab);
         }
         if (st != MDR_OK) {
-            rc = cli_fail("q31 table (--springs must be a power of two)", st);
+            rc = CLI_SFX(q31_table_fail)(A, &tab, st);
         }
     }
     if (rc != 0) {
@@ -195,7 +242,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         if (st != MDR_OK) {
             free(qnodes);
             free(nodes);
-            return cli_fail("q31 table (--springs must be a power of two)", st);
+            return CLI_SFX(q31_table_fail)(A, &tab, st);
         }
         st = CLI_SFX(mdr_engine_init_q31)(&Q.e, &Q.t, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv,
                                           (CLI_T)A->k_m);

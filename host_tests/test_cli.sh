@@ -494,5 +494,18 @@ ${CC:-cc} -std=c99 -Wall -Wextra -Werror -Ilib/include -I"$TMP" "$TMP/use.c" "$T
 refuse 'output names a .c file' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --output "$TMP/x.txt"
 refuse 'cannot write: /nonexistent/t.h' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --header /nonexistent/t.h
 
+# a spring table without a q31 form: the message names the real cause
+# (mdr_table_q31_from: N not a power of two; a spring slope >= 8 in Q3.28,
+# here the sphere tabulated to 0.999 R; a curvature term >= 2 in Q1.30, a
+# kinked tip over 2 springs), not a power of two for an N that is one
+S="--profile sphere --R 10e-6 --E 1e6 --w 0.05"
+refuse '^mdr: q31 table \(--springs must be a power of two\)' table --profile sphere --R 1e-6 --springs 100 --a-max 5e-7 --arith q31
+refuse '^mdr: q31 table: the profile is too steep over the table .*lower --a-max \(9.99e-06 m\), further below the sphere' \
+    cycle $S --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 9.99e-6 --arith q31
+refuse '^mdr: q31 table: the profile is too steep over the table' table --profile sphere --R 10e-6 --a-max 9.99e-6 --arith q31
+printf 'r,f\n0,0\n1e-6,0\n1.0001e-6,1e-6\n2e-6,1.00001e-6\n' >"$TMP/kink.csv"
+refuse '^mdr: q31 table: too few springs for the profile.s curvature .*raise --springs \(2\)' \
+    table --profile table --file "$TMP/kink.csv" --springs 2 --arith q31
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
