@@ -251,6 +251,18 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         st = CLI_SFX(mdr_engine_init)(&eng, &tab, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv,
                                       (CLI_T)A->k_m);
     }
+    if (A->q31 && st == MDR_E_PARAM &&
+        CLI_SFX(mdr_engine_init)(&eng, &tab, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv, (CLI_T)A->k_m) == MDR_OK) {
+        /* the material is valid (the float engine takes it): the q31 init
+         * refused an adhesion its formats do not resolve (MDR_Q31_ADH_LSB) */
+        free(qnodes);
+        free(nodes);
+        fprintf(stderr,
+                "mdr: q31 engine (--a-max, table to %.6g m): the pull-off force is below %d LSB of the q31 force "
+                "unit over a table this far beyond the pull-off radius; lower --a-max or use --arith f32 (status %d)\n",
+                (double)Q.t.L + (double)Q.t.L_lo, MDR_Q31_ADH_LSB, (int)st);
+        return 2;
+    }
     if (st != MDR_OK) {
         free(qnodes);
         free(nodes);

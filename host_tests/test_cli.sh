@@ -507,5 +507,15 @@ printf 'r,f\n0,0\n1e-6,0\n1.0001e-6,1e-6\n2e-6,1.00001e-6\n' >"$TMP/kink.csv"
 refuse '^mdr: q31 table: too few springs for the profile.s curvature .*raise --springs \(2\)' \
     table --profile table --file "$TMP/kink.csv" --springs 2 --arith q31
 
+# a q31 table so far beyond the pull-off radius that the adhesion is below
+# MDR_Q31_ADH_LSB LSB of F (0.03 LSB here): refused, named by its cause
+# (the material is valid: the float engine takes it), not as a parameter
+P="--profile paraboloid --R 10e-6 --E 1e6 --w 0.05 --w-adv 0.05 --control load --path 0,1e-6 --steps-per-segment 10"
+refuse '^mdr: q31 engine \(--a-max, table to 0.005 m\): the pull-off force is below 1024 LSB' cycle $P --a-max 5e-3 --arith q31
+refuse '^mdr: engine \(--E, --w, --w-adv, --k-machine\)' cycle --profile paraboloid --R 10e-6 --E 1e6 --w 0.05 \
+    --w-adv 0.06 --control load --path 0,1e-6 --steps-per-segment 10 --a-max 5e-3 --arith q31
+out=$("$MDR" cycle $P --a-max 5e-3 --arith f64 --summary "$TMP/s.json" 2>/dev/null) && grep -q '"event": "jump-in"' "$TMP/s.json" &&
+    ok || bad "the same table in f64: a jump-in"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
