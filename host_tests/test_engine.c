@@ -203,6 +203,50 @@ static void paraboloid_pull_off(void **st)
     }
 }
 
+/* Without adhesion a load back to F = 0 ends the contact at a = 0: the
+ * receding branch meets the control exactly there (U(0) = 0). The scan
+ * took node 0 for the end of a bracket and found a root a rounding above
+ * it (f32: a = 1.8e-12 L), whose band's slope overflowed: MDR_E_OVERFLOW
+ * on the last tick for about half the extents near 3.5 um (found by a
+ * helper through mdr cycle). 21 extents, f32 and f64, 1024 springs: every
+ * tick accepted, the last a separation to d = F = 0 (exact). */
+static void load_to_zero_without_adhesion(void **st)
+{
+    static mdr_node_f64 n64[MDR_TABLE_NODES(1024)];
+    static mdr_node_f32 n32[MDR_TABLE_NODES(1024)];
+    const double pd[3] = {JR, 0, 0};
+    const float pf[3] = {(float)JR, 0, 0};
+    int k, i;
+    (void)st;
+    for (k = 0; k <= 20; k++) {
+        const double L = 3.5e-6 * (1.0 + 0.002 * k);
+        mdr_contact_f64 c64;
+        mdr_contact_f32 c32;
+        mdr_table_f64 t64;
+        mdr_table_f32 t32;
+        mdr_engine_f64 e;
+        mdr_engine_f32 f;
+        mdr_step_f64 o;
+        mdr_step_f32 o32;
+        assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_PARABOLOID, pd, JE, 0.0), MDR_OK);
+        assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, (float)JE, 0.0f), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f64(&t64, n64, 1024, &c64, L), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f32(&t32, n32, 1024, &c32, (float)L), MDR_OK);
+        assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, 0.0, 0.0, 0.0), MDR_OK);
+        assert_int_equal(mdr_engine_init_f32(&f, &t32, (float)JE, 0.0f, 0.0f, 0.0f), MDR_OK);
+        for (i = 0; i <= 1000; i++) {
+            const double u = i <= 500 ? 3e-6 * i / 500 : 3e-6 * (1000 - i) / 500;
+            assert_int_equal(mdr_engine_step_F_f64(&e, u, &o), MDR_OK);
+            assert_int_equal(mdr_engine_step_F_f32(&f, (float)u, &o32), MDR_OK);
+        }
+        assert_int_equal(o.event, MDR_EV_SEPARATION);
+        assert_int_equal(o32.event, MDR_EV_SEPARATION);
+        assert_true(o.d == 0.0 && o.F == 0.0 && o32.d == 0.0f && o32.F == 0.0f);
+        assert_int_equal(e.contact, 0);
+        assert_int_equal(f.contact, 0);
+    }
+}
+
 /* The jump-in at first touch under fixed load (w_adv = w) whose landing
  * lies inside spring 0: 2 and 4 springs to 12 and 20 um, 1024 springs to
  * 5 mm (h = 4.9 um), against 4 springs to 12 um (landing beyond spring 0).
@@ -1208,6 +1252,7 @@ int main(void)
         cmocka_unit_test(paraboloid_pull_off),
         cmocka_unit_test(pull_off_inside_spring_0),
         cmocka_unit_test(jump_in_inside_spring_0),
+        cmocka_unit_test(load_to_zero_without_adhesion),
         cmocka_unit_test(paraboloid_machine),
         cmocka_unit_test(loading_branches),
         cmocka_unit_test(retraction_is_equilibrium),
