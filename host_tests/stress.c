@@ -96,6 +96,10 @@ static const struct {
 
 /* Statuses other than MDR_OK that a region may return, and why they are the
  * right answer there; any other status fails the sweep. */
+#define MDR_Q31_ADH_REASON                                                                                        \
+    "the adhesion unresolved: the pull-off force below MDR_Q31_ADH_LSB LSB of the q31 force unit, which the "     \
+    "table's largest force sets (a stiff E* with little w, or a table far beyond the pull-off radius; "           \
+    "test_q31 adhesion_range checks the limit against the f64 engine)"
 static const struct {
     const char *region;
     mdr_status st;
@@ -113,6 +117,12 @@ static const struct {
     {"f32 init (beyond float)", MDR_E_NONFINITE,
      "a power law C = 0.1 R^(1-n) beyond float range (n = 8, R = 1 nm: C = 1e62)"},
     {"f32 init (beyond float)", MDR_E_PARAM, "a derived constant beyond float range"},
+    {"paraboloid engine q31", MDR_E_PARAM, MDR_Q31_ADH_REASON},
+    {"sphere engine q31", MDR_E_PARAM, MDR_Q31_ADH_REASON},
+    {"flattip engine q31", MDR_E_PARAM, MDR_Q31_ADH_REASON},
+    {"cone engine q31", MDR_E_PARAM, MDR_Q31_ADH_REASON},
+    {"powerlaw engine q31", MDR_E_PARAM, MDR_Q31_ADH_REASON},
+    {"wavy engine q31", MDR_E_PARAM, MDR_Q31_ADH_REASON},
 };
 
 static int limited(const char *name)
