@@ -1000,6 +1000,7 @@ static void scene_q31_pull_at_range_end(void **state)
     mdr_step_q31 o, ref;
     int i;
     (void)state;
+    memset(&ref, 0, sizeof ref);
     assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 10e-6f, 1e6f, 0.05f, 0.025f, 0.f, MDR_OUT_ALL, NULL), MDR_OK);
     for (i = 2; i >= 0; i--) {
         assert_int_equal(mdr_scene_init_q31_f32(&q, &s, 20e-6f), MDR_OK);
