@@ -42,8 +42,8 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
  * from the contact's closed forms, or for a tabulated profile from the same
  * exact Abel integration (the same nodes as mdr_table_init_gap() in double;
  * in float from the slopes formed in double). */
-static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab,
-                               CLI_SFX(mdr_node) **nodes)
+static int CLI_SFX(make_table_w)(const struct cli_args *A, CLI_SFX(mdr_table) *tab,
+                                 CLI_SFX(mdr_node) **nodes, int widen)
 {
     uint16_t n = (uint16_t)A->springs;
     mdr_status st;
@@ -64,13 +64,28 @@ static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab
     } else if (!A->have_amax && (rc = CLI_SFX(default_extent)(A, &c, &a_max)) != 0) {
         free(keep);
         return rc;
+    } else if (!A->have_amax && widen > 0) {
+        /* the default extent doubled widen times, within the profile's
+         * domain (-1, nothing said: no wider table) */
+        const CLI_T a = a_max * (CLI_T)(1L << widen);
+        if (A->kind == MDR_PROFILE_FLATPUNCH || (A->kind == MDR_PROFILE_SPHERE && !(a < (CLI_T)0.999 * c.p[0]))) {
+            free(keep);
+            return -1;
+        }
+        a_max = a;
     }
     st = CLI_SFX(mdr_table_init_profile)(tab, *nodes, n, &c, a_max);
     free(keep);
     if (st != MDR_OK) {
-        return cli_fail("--a-max", st);
+        return widen > 0 ? -1 : cli_fail("--a-max", st);
     }
     return 0;
+}
+
+static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab,
+                               CLI_SFX(mdr_node) **nodes)
+{
+    return CLI_SFX(make_table_w)(A, tab, nodes, 0);
 }
 
 /* Why a spring table has no q31 form, named on one line (exit 2):
@@ -238,6 +253,25 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         st = MDR_E_SIZE;
         if (qnodes != NULL) {
             st = CLI_SFX(mdr_table_q31_from)(&Q.t, qnodes, &tab);
+        }
+        /* the default extent's table without a q31 form for a profile too
+         * steep over it (a strongly wavy one: a longer table has a larger
+         * depth unit Dg): doubled, at most 8 times, within the domain */
+        for (j = 1; j <= 8 && st == MDR_E_OVERFLOW && !A->have_amax && A->kind != KIND_TABLE; j++) {
+            CLI_SFX(mdr_table) wt;
+            CLI_SFX(mdr_node) *wn = NULL;
+            if (CLI_SFX(make_table_w)(A, &wt, &wn, (int)j) != 0) {
+                free(wn);
+                break;
+            }
+            if (CLI_SFX(mdr_table_q31_from)(&Q.t, qnodes, &wt) == MDR_OK) {
+                free(nodes);
+                nodes = wn;
+                tab = wt;
+                st = MDR_OK;
+            } else {
+                free(wn);
+            }
         }
         if (st != MDR_OK) {
             free(qnodes);

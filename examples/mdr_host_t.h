@@ -20,26 +20,72 @@ static inline HOST_T HOST_SFX(mdr_host_control_of)(uint8_t control, double k_m,
     return e->d + e->F / (HOST_T)k_m;
 }
 
+/** The controlled variable on the equilibrium curve at radius a (into *v). */
+static inline mdr_status HOST_SFX(mdr_host_control_at)(const HOST_SFX(mdr_contact) *c, uint8_t control,
+                                                       double k_m, HOST_T a, HOST_T *v)
+{
+    HOST_SFX(mdr_eqstate) e;
+    mdr_status st = HOST_SFX(mdr_eq)(c, a, &e);
+    if (st == MDR_OK) {
+        *v = HOST_SFX(mdr_host_control_of)(control, k_m, &e);
+    }
+    return st;
+}
+
+/** Bisect c(lo) < umax <= c(hi) to hi - lo <= 2^-20 hi (at most 64
+ *  halvings); returns the bracket's upper end (an evaluation that fails
+ *  stops there: hi stays a radius where the curve is at or above umax). */
+static inline HOST_T HOST_SFX(mdr_host_bisect)(const HOST_SFX(mdr_contact) *c, uint8_t control, double k_m,
+                                               HOST_T umax, HOST_T lo, HOST_T hi)
+{
+    int i;
+    for (i = 0; i < 64 && hi - lo > hi * (HOST_T)9.5367431640625e-7; i++) {
+        const HOST_T mid = lo + (hi - lo) / (HOST_T)2;
+        HOST_T v;
+        if (HOST_SFX(mdr_host_control_at)(c, control, k_m, mid, &v) != MDR_OK) {
+            break;
+        }
+        if (v >= umax) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return hi;
+}
+
 /**
  * @brief Default table extent for a cycle along a path of the controlled
- *        variable: 1.25 x the radius where the equilibrium curve (work w,
- *        the widest of every approach branch) reaches the path's largest
- *        value, found by doubling from mdr_default_start() (at most 200
- *        doublings); capped by the profile's domain (flat punch: a0, sphere:
- *        0.999 R).
+ *        variable: 1.25 x the radius a* where the equilibrium curve (work
+ *        w, the widest of every approach branch: w_adv <= w gives a larger
+ *        d, F and z at every radius) reaches the path's largest value,
+ *        umax. No approach, jump or re-approach along the path takes the
+ *        edge beyond a*. a* is bracketed from mdr_default_start() by
+ *        doubling while the curve lies below umax (at most 200 doublings)
+ *        or halving while it lies at or above it (at most 60 halvings),
+ *        then bisected to a relative width of 2^-20: the extent is 1.25 a*
+ *        to within 1e-6 (above it: the bracket's upper end). The wavy
+ *        curve, which may cross umax several times, is scanned below that
+ *        crossing at eight cells per wavelength (at most 65536 cells) for
+ *        its first crossing after it has been below umax. Capped by the profile's domain
+ *        (flat punch: a0, sphere: 0.999 R). A path that never reaches the
+ *        curve's rising branch (nothing below umax within 2^-60 of the
+ *        start: the body stays apart) gets 1.25 x the start.
  * @param c        an initialised contact
  * @param control  MDR_CONTROL_* of the path
  * @param k_m      machine stiffness [N/m] (MDR_CONTROL_MACHINE)
  * @param path     npath >= 1 values of the controlled variable [m or N]
  * @param[out] a_max  [m], written on MDR_OK only
- * @return MDR_OK or the status of mdr_default_start() / mdr_eq()
+ * @return MDR_OK or the status of mdr_default_start() / mdr_eq() (above
+ *         the start)
  */
 static inline mdr_status HOST_SFX(mdr_host_extent)(const HOST_SFX(mdr_contact) *c, uint8_t control,
                                                    double k_m, const double *path, long npath,
                                                    HOST_T *a_max)
 {
-    HOST_T a, cap = (HOST_T)1e30, umax = (HOST_T)path[0];
+    HOST_T a, lo, hi, v, cap = (HOST_T)1e30, umax = (HOST_T)path[0];
     long i;
+    int found = 0;
     mdr_status st;
     for (i = 1; i < npath; i++) {
         umax = (HOST_T)path[i] > umax ? (HOST_T)path[i] : umax;
@@ -55,18 +101,78 @@ static inline mdr_status HOST_SFX(mdr_host_extent)(const HOST_SFX(mdr_contact) *
     if (st != MDR_OK) {
         return st;
     }
-    for (i = 0; i < 200 && a < cap; i++) {
-        HOST_SFX(mdr_eqstate) e;
-        st = HOST_SFX(mdr_eq)(c, a, &e);
-        if (st != MDR_OK) {
-            return st;
-        }
-        if (HOST_SFX(mdr_host_control_of)(control, k_m, &e) >= umax) {
-            break;
-        }
-        a *= 2;
+    a = a < cap ? a : cap;
+    st = HOST_SFX(mdr_host_control_at)(c, control, k_m, a, &v);
+    if (st != MDR_OK) {
+        return st;
     }
-    a *= (HOST_T)1.25;
+    lo = hi = a;
+    if (v < umax) {
+        /* up: double until the curve reaches umax (or the cap) */
+        for (i = 0; i < 200 && !found; i++) {
+            hi = (HOST_T)2 * lo < cap ? (HOST_T)2 * lo : cap;
+            st = HOST_SFX(mdr_host_control_at)(c, control, k_m, hi, &v);
+            if (st != MDR_OK) {
+                return st;
+            }
+            if (v >= umax) {
+                found = 1;
+            } else if (hi >= cap) {
+                *a_max = cap; /* the path goes beyond the domain's end */
+                return MDR_OK;
+            } else {
+                lo = hi;
+            }
+        }
+        if (!found) {
+            a = (HOST_T)1.25 * hi;
+            *a_max = a < cap ? a : cap;
+            return MDR_OK;
+        }
+    } else {
+        /* down: halve until the curve lies below umax */
+        for (i = 0; i < 60 && !found; i++) {
+            lo = hi / (HOST_T)2;
+            if (HOST_SFX(mdr_host_control_at)(c, control, k_m, lo, &v) != MDR_OK) {
+                break;
+            }
+            if (v < umax) {
+                found = 1;
+            } else {
+                hi = lo;
+            }
+        }
+        if (!found) {
+            a = (HOST_T)1.25 * a;
+            *a_max = a < cap ? a : cap;
+            return MDR_OK;
+        }
+    }
+    hi = HOST_SFX(mdr_host_bisect)(c, control, k_m, umax, lo, hi);
+    if (c->kind == MDR_PROFILE_WAVY && c->p[1] > (HOST_T)0) {
+        /* the wavy curve may cross umax several times below hi: the first
+         * crossing after the curve has been below umax, from a scan of
+         * eight cells per wavelength (at most 65536 cells: a narrower
+         * excursion above umax that the scan steps over leaves a later
+         * crossing, a larger extent) */
+        const HOST_T cell = c->p[2] / (HOST_T)8 > hi / (HOST_T)65536 ? c->p[2] / (HOST_T)8 : hi / (HOST_T)65536;
+        HOST_T prev = (HOST_T)0;
+        int below = 0;
+        for (i = 1; (HOST_T)i * cell < hi; i++) {
+            const HOST_T x = (HOST_T)i * cell;
+            if (HOST_SFX(mdr_host_control_at)(c, control, k_m, x, &v) != MDR_OK) {
+                break;
+            }
+            if (v < umax) {
+                below = 1;
+                prev = x;
+            } else if (below) {
+                hi = HOST_SFX(mdr_host_bisect)(c, control, k_m, umax, prev, x);
+                break;
+            }
+        }
+    }
+    a = (HOST_T)1.25 * hi;
     *a_max = a < cap ? a : cap;
     return MDR_OK;
 }

@@ -494,6 +494,29 @@ ${CC:-cc} -std=c99 -Wall -Wextra -Werror -Ilib/include -I"$TMP" "$TMP/use.c" "$T
 refuse 'output names a .c file' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --output "$TMP/x.txt"
 refuse 'cannot write: /nonexistent/t.h' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --header /nonexistent/t.h
 
+# the default table extent is what the help says: 1.25 x the largest radius
+# the path reaches (w_adv = w: the path follows the equilibrium curve of w,
+# whose crossing of the path's largest value the extent is formed from; to
+# 1e-2: the engine's radius on 1024 springs), for every control and profile
+# (the wavy one crossing that value more than once below its first
+# crossing); the q31 engine on the reproducer's power law then agrees with
+# f64 to 1e-6 of the peak force (3.7e-8 measured; 3.4e-5 = 3.7 x with the
+# old extent)
+E="--E 1e6 --w 0.05 --w-adv 0.05 --steps-per-segment 2000 --arith f64"
+for p in "paraboloid --R 10e-6" "sphere --R 10e-6" "cone --theta 0.3" "powerlaw --C 1e34 --n 8" \
+    "flattip --R 10e-6 --b 1e-6" "wavy --R 10e-6 --h 1e-8 --lambda 5e-7" "wavy --R 10e-6 --h 2e-7 --lambda 1e-6"; do
+    for c in "grips --path 0,0.5e-6,-0.6e-6" "load --path 0,3e-6,-3e-6" "machine --k-machine 1 --path 0,0.5e-6,-1e-6"; do
+        $MDR cycle --profile $p $E --control $c >"$TMP/x.csv" 2>"$TMP/x.json" || bad "cycle $p $c: exit"
+        am=$(key "$(cat "$TMP/x.json")" a_max)
+        awk -F, -v am="$am" 'NR > 1 && $5 > m { m = $5 } END { r = 1.25 * m / am; exit !(r >= 0.99 && r <= 1.0001) }' \
+            "$TMP/x.csv" && ok || bad "default a_max = 1.25 x the radius reached: $p $c (a_max $am)"
+    done
+done
+PL="--profile powerlaw --C 1e34 --n 8 --E 1e6 --w 0.05 --w-adv 0.025 --control load --path 0,1e-5,-3e-5 --steps-per-segment 1000"
+$MDR cycle $PL --arith f64 >"$TMP/f.csv" 2>/dev/null && $MDR cycle $PL --arith q31 >"$TMP/q.csv" 2>/dev/null &&
+    paste -d, "$TMP/f.csv" "$TMP/q.csv" | awk -F, 'NR > 1 { d = $4 - $10; d = d < 0 ? -d : d; m = d > m ? d : m; p = $4 < 0 ? -$4 : $4; pk = p > pk ? p : pk }
+        END { exit !(m <= 1e-6 * pk) }' && ok || bad "q31 = f64 to 1e-6 of the peak force on the default extent (power law)"
+
 # a spring table without a q31 form: the message names the real cause
 # (mdr_table_q31_from: N not a power of two; a spring slope >= 8 in Q3.28,
 # here the sphere tabulated to 0.999 R; a curvature term >= 2 in Q1.30, a
