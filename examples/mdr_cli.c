@@ -657,10 +657,12 @@ static const char *const usage_cmd[NCMD] = {
     "  echoed in the summary). --springs N: default 1024 (2..16384; q31: a power of\n"
     "  two). --a-max: the table extent, default 1.25 x the largest radius the path can\n"
     "  reach (to 1e-6: where the equilibrium curve of w first reaches the path's\n"
-    "  largest value; the sphere: at most 0.999 R; q31: doubled, at most 8 times,\n"
-    "  while the profile is too steep for a q31 table of that extent). q31: the\n"
-    "  fixed-point engine on the table converted from the f64 one; the path must\n"
-    "  stay within its input range (+-2 units of D0, F0 or Z0).\n",
+    "  largest value; the sphere: at most 0.999 R). q31: the fixed-point engine on\n"
+    "  the table converted from the f64 one; the path must stay within its input\n"
+    "  range (+-2 units of D0, F0 or Z0; machine: z >= z_min, where the free\n"
+    "  body's depth fits), else it is refused. The q31 default extent is that one\n"
+    "  doubled, at most 8 times, until the q31 table exists and the whole path\n"
+    "  fits (the units grow with the table); an explicit --a-max is kept.\n",
     /* table */
     "usage: mdr table <profile> [--springs N] --a-max A [--name NAME] [--arith f32|f64|q31]\n"
     "                 [--output FILE.c] [--header FILE.h]\n"

@@ -5,11 +5,29 @@
  * "%.17g") defined. Returns the process exit status.
  */
 
-/* Default table extent for a cycle (mdr_host_extent(), mdr_host_t.h). */
+/* Default table extent for a cycle (mdr_host_extent(); q31:
+ * mdr_host_extent_q31(), widened until the q31 engine takes the path; both
+ * in mdr_host_t.h, shared with the Python package). */
 static int CLI_SFX(default_extent)(const struct cli_args *A, const CLI_SFX(mdr_contact) *c,
                                    CLI_T *a_max)
 {
-    mdr_status st = CLI_SFX(mdr_host_extent)(c, A->control, A->k_m, A->path, A->npath, a_max);
+    mdr_status st;
+    if (A->q31) {
+        const size_t nn = MDR_TABLE_NODES((uint16_t)A->springs);
+        CLI_SFX(mdr_node) *nodes = malloc(nn * sizeof *nodes);
+        mdr_node_q31 *qnodes = malloc(nn * sizeof *qnodes);
+        mdr_host_q31 *q = malloc(sizeof *q);
+        st = MDR_E_SIZE;
+        if (nodes != NULL && qnodes != NULL && q != NULL) {
+            st = CLI_SFX(mdr_host_extent_q31)(c, (uint16_t)A->springs, A->E, A->w, A->w_adv, A->k_m, A->control,
+                                              A->path, A->npath, A->steps, nodes, qnodes, q, a_max);
+        }
+        free(q);
+        free(qnodes);
+        free(nodes);
+    } else {
+        st = CLI_SFX(mdr_host_extent)(c, A->control, A->k_m, A->path, A->npath, a_max);
+    }
     return st == MDR_OK ? 0 : cli_fail("default --a-max", st);
 }
 
@@ -42,8 +60,8 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
  * from the contact's closed forms, or for a tabulated profile from the same
  * exact Abel integration (the same nodes as mdr_table_init_gap() in double;
  * in float from the slopes formed in double). */
-static int CLI_SFX(make_table_w)(const struct cli_args *A, CLI_SFX(mdr_table) *tab,
-                                 CLI_SFX(mdr_node) **nodes, int widen)
+static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab,
+                               CLI_SFX(mdr_node) **nodes)
 {
     uint16_t n = (uint16_t)A->springs;
     mdr_status st;
@@ -64,28 +82,13 @@ static int CLI_SFX(make_table_w)(const struct cli_args *A, CLI_SFX(mdr_table) *t
     } else if (!A->have_amax && (rc = CLI_SFX(default_extent)(A, &c, &a_max)) != 0) {
         free(keep);
         return rc;
-    } else if (!A->have_amax && widen > 0) {
-        /* the default extent doubled widen times, within the profile's
-         * domain (-1, nothing said: no wider table) */
-        const CLI_T a = a_max * (CLI_T)(1L << widen);
-        if (A->kind == MDR_PROFILE_FLATPUNCH || (A->kind == MDR_PROFILE_SPHERE && !(a < (CLI_T)0.999 * c.p[0]))) {
-            free(keep);
-            return -1;
-        }
-        a_max = a;
     }
     st = CLI_SFX(mdr_table_init_profile)(tab, *nodes, n, &c, a_max);
     free(keep);
     if (st != MDR_OK) {
-        return widen > 0 ? -1 : cli_fail("--a-max", st);
+        return cli_fail("--a-max", st);
     }
     return 0;
-}
-
-static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab,
-                               CLI_SFX(mdr_node) **nodes)
-{
-    return CLI_SFX(make_table_w)(A, tab, nodes, 0);
 }
 
 /* Why a spring table has no q31 form, named on one line (exit 2):
@@ -253,25 +256,6 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         st = MDR_E_SIZE;
         if (qnodes != NULL) {
             st = CLI_SFX(mdr_table_q31_from)(&Q.t, qnodes, &tab);
-        }
-        /* the default extent's table without a q31 form for a profile too
-         * steep over it (a strongly wavy one: a longer table has a larger
-         * depth unit Dg): doubled, at most 8 times, within the domain */
-        for (j = 1; j <= 8 && st == MDR_E_OVERFLOW && !A->have_amax && A->kind != KIND_TABLE; j++) {
-            CLI_SFX(mdr_table) wt;
-            CLI_SFX(mdr_node) *wn = NULL;
-            if (CLI_SFX(make_table_w)(A, &wt, &wn, (int)j) != 0) {
-                free(wn);
-                break;
-            }
-            if (CLI_SFX(mdr_table_q31_from)(&Q.t, qnodes, &wt) == MDR_OK) {
-                free(nodes);
-                nodes = wn;
-                tab = wt;
-                st = MDR_OK;
-            } else {
-                free(wn);
-            }
         }
         if (st != MDR_OK) {
             free(qnodes);

@@ -177,6 +177,114 @@ static inline mdr_status HOST_SFX(mdr_host_extent)(const HOST_SFX(mdr_contact) *
     return MDR_OK;
 }
 
+/**
+ * @brief Whether a q31 engine exists on a float table and takes a whole path
+ *        as its steps would: the q31 table (mdr_table_q31_from()), the
+ *        engine (mdr_engine_init_q31()) and its SI units in *q, then every
+ *        tick's value (mdr_host_path_value()) converted as the step converts
+ *        it (mdr_host_q31_raw(): within +-2 units of D0, F0 or Z0) and, under
+ *        a machine, at or above the engine's z_min (a separated machine's
+ *        depth d = z 2^sz, Q2.29 of D0, fits the step's int32 there; below
+ *        it, the free body's depth saturates).
+ * @param tab     the float table; qnodes: MDR_TABLE_NODES(tab->n) nodes
+ * @param steps   ticks per segment of the path (>= 1)
+ * @return MDR_OK (q is ready); the status of mdr_table_q31_from() or
+ *         mdr_engine_init_q31(); MDR_E_OVERFLOW (a tick beyond the range);
+ *         MDR_E_NONFINITE (a tick NaN or inf)
+ */
+static inline mdr_status HOST_SFX(mdr_host_q31_fits)(const HOST_SFX(mdr_table) *tab, mdr_node_q31 *qnodes,
+                                                     mdr_host_q31 *q, double E, double w, double w_adv,
+                                                     double k_m, uint8_t control, const double *path,
+                                                     long npath, long steps)
+{
+    const int machine = control != MDR_CONTROL_GRIPS && control != MDR_CONTROL_LOAD;
+    double unit;
+    long i;
+    mdr_status st = HOST_SFX(mdr_table_q31_from)(&q->t, qnodes, tab);
+    if (st == MDR_OK) {
+        st = HOST_SFX(mdr_engine_init_q31)(&q->e, &q->t, (HOST_T)E, (HOST_T)w, (HOST_T)w_adv, (HOST_T)k_m);
+    }
+    if (st != MDR_OK) {
+        return st;
+    }
+    mdr_host_q31_units(q, E);
+    unit = control == MDR_CONTROL_GRIPS ? q->D0 : control == MDR_CONTROL_LOAD ? q->F0 : q->Z0;
+    /* each vertex, then each tick (the interpolation may round a vertex's
+     * value by an ulp), as `mdr cycle` checks them */
+    for (i = 0; i < npath + (npath - 1) * steps; i++) {
+        const long seg = i < npath ? 0 : (i - npath) / steps, j = i < npath ? 0 : (i - npath) % steps + 1;
+        const double v = i < npath ? path[i] : mdr_host_path_value(path, steps, seg, j);
+        int32_t raw = 0;
+        st = mdr_host_q31_raw(v, unit, &raw);
+        if (st != MDR_OK) {
+            return st;
+        }
+        if (machine && q->e.machine && raw < q->e.z_min) {
+            return MDR_E_OVERFLOW;
+        }
+    }
+    return MDR_OK;
+}
+
+/** The number of doublings of the default extent the q31 rule tries. */
+#define MDR_HOST_Q31_WIDEN 8
+
+/**
+ * @brief Default table extent of a q31 cycle: mdr_host_extent(), doubled
+ *        (at most MDR_HOST_Q31_WIDEN times) until the q31 form of the table
+ *        of n springs to that extent exists and the whole path fits its
+ *        ranges (mdr_host_q31_fits()). The q31 units grow with the table
+ *        (D0 with max|g|, F0 = 2 E* L D0, Z0 = 2^sz D0): a table tight
+ *        around the path can have a profile too steep for its q31 form (a
+ *        strongly wavy one) or units too small for a path driven far past
+ *        the pull-off. The doublings stay within the profile's domain (flat
+ *        punch: none; sphere: below 0.999 R) and stop at the first refusal
+ *        other than MDR_E_OVERFLOW (a table or engine init, e.g. an adhesion
+ *        below MDR_Q31_ADH_LSB of a wider table's force unit). When no
+ *        extent fits, the undoubled one (the caller's checks then name why).
+ *        An explicit extent is the caller's and is never changed.
+ * @param nodes   scratch of MDR_TABLE_NODES(n) float nodes; qnodes of as
+ *                many q31 nodes; q: scratch engine (all overwritten)
+ * @param[out] a_max  [m], written on MDR_OK only
+ * @return MDR_OK or the status of mdr_host_extent()
+ */
+static inline mdr_status HOST_SFX(mdr_host_extent_q31)(const HOST_SFX(mdr_contact) *c, uint16_t n, double E,
+                                                       double w, double w_adv, double k_m, uint8_t control,
+                                                       const double *path, long npath, long steps,
+                                                       HOST_SFX(mdr_node) *nodes, mdr_node_q31 *qnodes,
+                                                       mdr_host_q31 *q, HOST_T *a_max)
+{
+    HOST_T a0, a;
+    int k;
+    mdr_status st = HOST_SFX(mdr_host_extent)(c, control, k_m, path, npath, &a0);
+    if (st != MDR_OK) {
+        return st;
+    }
+    a = a0;
+    for (k = 0; k <= MDR_HOST_Q31_WIDEN; k++) {
+        HOST_SFX(mdr_table) tab;
+        a = k > 0 ? (HOST_T)2 * a : a; /* a0 2^k (exact) */
+        if (k > 0 && (c->kind == MDR_PROFILE_FLATPUNCH ||
+                      (c->kind == MDR_PROFILE_SPHERE && !(a < (HOST_T)0.999 * c->p[0])))) {
+            break;
+        }
+        st = HOST_SFX(mdr_table_init_profile)(&tab, nodes, n, c, a);
+        if (st != MDR_OK) {
+            break;
+        }
+        st = HOST_SFX(mdr_host_q31_fits)(&tab, qnodes, q, E, w, w_adv, k_m, control, path, npath, steps);
+        if (st == MDR_OK) {
+            *a_max = a;
+            return MDR_OK;
+        }
+        if (st != MDR_E_OVERFLOW) {
+            break;
+        }
+    }
+    *a_max = a0;
+    return MDR_OK;
+}
+
 /** @brief A step record in double (exact: every field widened). */
 static inline void HOST_SFX(mdr_host_widen)(const HOST_SFX(mdr_step) *s, mdr_step_f64 *o)
 {

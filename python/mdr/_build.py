@@ -119,6 +119,9 @@ double mdr_host_path_value(const double *path, long steps, long seg, long j);
 mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
                         uint8_t control, double k_m, const double *path, size_t npath,
                         double *a_max);
+mdr_status mdrpy_extent_q31(uint8_t kind, const double p[3], double E, double w, double w_adv,
+                            uint8_t control, double k_m, uint16_t springs, const double *path,
+                            size_t npath, long steps, double *a_max);
 mdr_status mdrpy_engine_profile(mdrpy_engine *x, uint8_t arith, uint8_t kind, const double p[3],
                                 double E, double w, double w_adv, double k_m, uint16_t springs,
                                 double a_max, mdr_node_f32 *n32, mdr_node_f64 *n64,

@@ -63,7 +63,8 @@ class Engine:
     its documented input range are refused, not saturated).
     a_max: table extent [m]; None: chosen at the first run() as `mdr cycle`
     does (1.25 x the radius where the equilibrium curve reaches the path's
-    largest value), so errors of the table or of the engine's parameters
+    largest value; q31: doubled, at most 8 times, until the q31 table exists
+    and every tick of that run's path fits its ranges), so errors of the table or of the engine's parameters
     appear there. A sampled tip: Engine(mdr.Contact("table", r=..., f=...,
     E=..., w=...)) or Engine.from_tip(r, f, E=..., w=...), the same table
     (to the last sample r[-1]; a_max is not taken).
@@ -231,8 +232,12 @@ class Engine:
             self._check_path(ctl, path, pp)  # finite, before the table extent is taken from it
             c = self.contact
             a_max = ffi.new("double *")
-            check(lib.mdrpy_extent(self._arith, c.kind, list(c.p), self.E, self.w, ctl, self.k_machine, pp,
-                                   path.size, a_max), "Engine.run: default a_max")
+            if self.arith == "q31":  # widened until the q31 engine takes this run's path, as `mdr cycle`
+                check(lib.mdrpy_extent_q31(c.kind, list(c.p), self.E, self.w, self.w_adv, ctl, self.k_machine,
+                                           self.springs, pp, path.size, steps, a_max), "Engine.run: default a_max")
+            else:
+                check(lib.mdrpy_extent(self._arith, c.kind, list(c.p), self.E, self.w, ctl, self.k_machine, pp,
+                                       path.size, a_max), "Engine.run: default a_max")
             self._build(a_max[0])
         self._check_path(ctl, path, pp)
         n = 1 + (path.size - 1) * steps

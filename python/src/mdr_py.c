@@ -72,6 +72,39 @@ mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E
     return mdrpy_extent_f64(kind, p, E, w, control, k_m, path, npath, a_max);
 }
 
+mdr_status mdrpy_extent_q31(uint8_t kind, const double p[3], double E, double w, double w_adv,
+                            uint8_t control, double k_m, uint16_t springs, const double *path,
+                            size_t npath, long steps, double *a_max)
+{
+    mdr_contact_f64 c;
+    mdr_node_f64 *nodes;
+    mdr_node_q31 *qnodes;
+    mdr_host_q31 *q;
+    mdr_status st;
+    if (p == NULL || path == NULL || a_max == NULL || npath < 2) {
+        return MDR_E_NULL;
+    }
+    if (steps < 1) {
+        return MDR_E_PARAM;
+    }
+    st = mdrpy_contact_f64(&c, kind, p, E, w);
+    if (st != MDR_OK) {
+        return st;
+    }
+    nodes = malloc(MDR_TABLE_NODES(springs) * sizeof *nodes);
+    qnodes = malloc(MDR_TABLE_NODES(springs) * sizeof *qnodes);
+    q = malloc(sizeof *q);
+    st = MDR_E_SIZE;
+    if (nodes != NULL && qnodes != NULL && q != NULL) {
+        st = mdr_host_extent_q31_f64(&c, springs, E, w, w_adv, k_m, control, path, (long)npath, steps, nodes,
+                                     qnodes, q, a_max);
+    }
+    free(q);
+    free(qnodes);
+    free(nodes);
+    return st;
+}
+
 mdr_status mdrpy_engine_profile(mdrpy_engine *x, uint8_t arith, uint8_t kind, const double p[3],
                                 double E, double w, double w_adv, double k_m, uint16_t springs,
                                 double a_max, mdr_node_f32 *n32, mdr_node_f64 *n64,

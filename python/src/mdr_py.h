@@ -133,6 +133,20 @@ mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E
                         double *a_max);
 
 /**
+ * @brief Default table extent of a q31 engine for a path
+ *        (mdr_host_extent_q31(), as `mdr cycle --arith q31`): the f64
+ *        extent of mdrpy_extent(), doubled (at most MDR_HOST_Q31_WIDEN
+ *        times) until the q31 table of springs springs exists and every
+ *        tick of the path (steps per segment) fits the q31 ranges.
+ * @return MDR_OK; MDR_E_NULL (npath < 2); MDR_E_PARAM (steps < 1);
+ *         MDR_E_SIZE (no memory); or the library's status (contact init,
+ *         default start, eq)
+ */
+mdr_status mdrpy_extent_q31(uint8_t kind, const double p[3], double E, double w, double w_adv,
+                            uint8_t control, double k_m, uint16_t springs, const double *path,
+                            size_t npath, long steps, double *a_max);
+
+/**
  * @brief Engine on the spring table of an analytic profile of extent a_max.
  *        f32: f32 contact and table; f64: f64; q31: the f64 table converted
  *        (mdr_table_q31_from_f64) and the double init, as `mdr cycle`.
