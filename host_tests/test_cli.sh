@@ -517,6 +517,30 @@ $MDR cycle $PL --arith f64 >"$TMP/f.csv" 2>/dev/null && $MDR cycle $PL --arith q
     paste -d, "$TMP/f.csv" "$TMP/q.csv" | awk -F, 'NR > 1 { d = $4 - $10; d = d < 0 ? -d : d; m = d > m ? d : m; p = $4 < 0 ? -$4 : $4; pk = p > pk ? p : pk }
         END { exit !(m <= 1e-6 * pk) }' && ok || bad "q31 = f64 to 1e-6 of the peak force on the default extent (power law)"
 
+# q31's default extent widens until the whole path fits the q31 ranges
+# (mdr_host_extent_q31, shared with the Python package): a machine path
+# driven far past the pull-off (the free body's depth d = z 2^sz beyond the
+# step's int32 at the f64 extent, which saturates there) runs by default on
+# a doubled extent, unsaturated, and agrees with the f64 engine on the same
+# table to the documented 8 LSB of F0 (docs/fixed-point.md; F0 from the
+# range message of a load path on that table)
+S="--profile sphere --R 20e-9 --E 1e9 --w 0.05 --w-adv 0.02 --steps-per-segment 2000"
+SM="$S --k-machine 0.2 --control machine --path -5e-9,3e-9,-40e-9"
+$MDR cycle $SM --arith f64 >/dev/null 2>"$TMP/f.json" || bad "q31 widening: f64 run"
+af=$(key "$(cat "$TMP/f.json")" a_max)
+$MDR cycle $SM --arith q31 --a-max "$af" 2>&1 >/dev/null | grep -q 'q31 inputs or results saturated' &&
+    ok || bad "q31 machine path far past pull-off saturates on the f64 extent $af"
+$MDR cycle $SM --arith q31 >"$TMP/q.csv" 2>"$TMP/q.json" && ! grep -q saturated "$TMP/q.json" &&
+    ok || bad "q31 machine path far past pull-off runs unsaturated by default: $(head -c 300 "$TMP/q.json")"
+aq=$(key "$(cat "$TMP/q.json")" a_max)
+awk -v a="$aq" -v b="$af" 'BEGIN { r = a / b; k = log(r) / log(2); exit !(r > 1.5 && k <= 8.0001 && (k - int(k + 0.5)) ^ 2 < 1e-12) }' &&
+    ok || bad "q31 default extent $aq = 2^k x the f64 one $af, 1 <= k <= 8"
+F2=$($MDR cycle $S --control load --path 0,1 --a-max "$aq" --arith q31 2>&1 | sed -n 's/.*= +-\([0-9.e+-]*\) N$/\1/p')
+$MDR cycle $SM --arith f64 --a-max "$aq" >"$TMP/f.csv" 2>/dev/null &&
+    paste -d, "$TMP/f.csv" "$TMP/q.csv" | awk -F, -v F2="$F2" 'NR > 1 { d = $4 - $10; d = d < 0 ? -d : d; m = d > m ? d : m; n++ }
+        END { exit !(n == 4001 && F2 > 0 && m <= 8 * (F2 / 2) / 536870912) }' &&
+    ok || bad "q31 (widened) = f64 on the same table to 8 LSB of F0 (2 F0 = $F2)"
+
 # a spring table without a q31 form: the message names the real cause
 # (mdr_table_q31_from: N not a power of two; a spring slope >= 8 in Q3.28,
 # here the sphere tabulated to 0.999 R; a curvature term >= 2 in Q1.30, a
