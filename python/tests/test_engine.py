@@ -189,9 +189,13 @@ def test_jkr_pull_off_through_engine(arith):
     grips, and Kendall's -sqrt(8 pi a0^3 E* w) for the flat punch."""
     E, w, R = 1e6, 0.05, 10e-6
     c = mdr.Contact("paraboloid", E=E, w=w, R=R)
+    # (the table to 11.8 um, the default extent these bounds were measured
+    # on: the f32 fold's rounding depends on where it falls among 128
+    # springs, 8.9e-6 at worst over extents of 3 to 20 um)
     for control, path, F in (("load", [0, 3e-6, -3e-6], -1.5 * math.pi * w * R),
                              ("grips", [0, 0.5e-6, -0.6e-6], -5 / 6 * math.pi * w * R)):
-        run = mdr.Engine(c, springs=128, w_adv=w, arith=arith).run(path, control=control, steps_per_segment=2000)
+        run = mdr.Engine(c, springs=128, w_adv=w, arith=arith, a_max=1.1832628384881835e-05).run(
+            path, control=control, steps_per_segment=2000)
         assert within(abs(run.pull_off.F0 / F - 1), ENG[arith], "ENG" + arith), (control, run.pull_off)
     # a machine of stiffness k: the fold of z = d + F/k (bisection on the closed forms)
     k = 0.5
