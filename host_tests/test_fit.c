@@ -967,7 +967,10 @@ static void test_refuse_bad_start(void **state)
                 check_fit64(&r, p->E, p->w, z0, 0.0, zs[0] - zs[last], fabs(Fpo), TOL_RT, what);
                 ok++;
             } else {
-                if (!(st == MDR_E_MISFIT || st == MDR_E_DEGENERATE || st == MDR_E_FITCAP)) {
+                /* (a refusal that names no answer found: on the Cortex-M4F,
+                 * whose double arithmetic rounds otherwise, E0 = 1e13, w0 =
+                 * 1 ends in an inner solve's cap, MDR_E_NOCONV) */
+                if (!(st == MDR_E_MISFIT || st == MDR_E_DEGENERATE || st == MDR_E_FITCAP || st == MDR_E_NOCONV)) {
                     fail_msg("%s: status %d (%s)", what, st, mdr_status_str(st));
                 }
                 assert_memory_equal(&r, &pz, sizeof r); /* out untouched on error */
