@@ -121,13 +121,17 @@ static double jkr_z(const jkr_par *p, double a, double *F, double *dz)
     return d + f / p->km;
 }
 
-/* fold radius (dz/da = 0) by bisection */
+/* fold radius (dz/da = 0) for any parameters (the contact radius may
+ * exceed R): the bracket grown until dz/da > 0, then geometric bisection */
 static double jkr_fold(const jkr_par *p)
 {
-    double lo = 1e-15, hi = p->R, dz;
+    double lo = 1e-30, hi = p->R, dz;
     int i;
+    for (jkr_z(p, hi, NULL, &dz); !(dz > 0); jkr_z(p, hi, NULL, &dz)) {
+        hi *= 2;
+    }
     for (i = 0; i < 400; i++) {
-        double mid = 0.5 * (lo + hi);
+        double mid = sqrt(lo * hi);
         jkr_z(p, mid, NULL, &dz);
         if (dz > 0) {
             hi = mid;
@@ -796,6 +800,28 @@ static void expect_fail(const mdr_contact_f64 *c, const mdr_fit_opts_f64 *o, con
     assert_memory_equal(&r, &p, sizeof r);
 }
 
+/* expect_fail, and the same status from the f32 fit of the same curve
+ * (zs, Fs rounded to float) on the paraboloid of radius R, k_m km */
+static void expect_fail_both(double R, double km, uint32_t n, mdr_status want, const char *what)
+{
+    const mdr_contact_f64 c = paraboloid64(R);
+    mdr_contact_f32 c32;
+    mdr_fit_opts_f64 o;
+    mdr_fit_opts_f32 o32;
+    mdr_fit_result_f32 r32;
+    const float pp[3] = {(float)R, 0, 0};
+    uint32_t i;
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
+    mdr_fit_defaults_f64(&o, km);
+    mdr_fit_defaults_f32(&o32, (float)km);
+    expect_fail(&c, &o, zs, Fs, n, 2 * NMAX, want, what);
+    for (i = 0; i < n; i++) {
+        zs32[i] = (float)zs[i];
+        Fs32[i] = (float)Fs[i];
+    }
+    assert_int_equal(mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, n, work32, 2 * NMAX, &r32), want);
+}
+
 static void test_bad_input(void **state)
 {
     const jkr_par *p = &regimes[1];
@@ -893,27 +919,6 @@ static void test_jumps(void **state)
 
 /* ---- answers the fit must refuse ------------------------------------------- */
 
-/* fold radius for any parameters (the contact radius may exceed R): the
- * bracket grown until dz/da > 0, then geometric bisection */
-static double jkr_fold_any(const jkr_par *p)
-{
-    double lo = 1e-30, hi = p->R, dz;
-    int i;
-    for (jkr_z(p, hi, NULL, &dz); !(dz > 0); jkr_z(p, hi, NULL, &dz)) {
-        hi *= 2;
-    }
-    for (i = 0; i < 400; i++) {
-        double mid = sqrt(lo * hi);
-        jkr_z(p, mid, NULL, &dz);
-        if (dz > 0) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    return hi;
-}
-
 /* A retract of n + 1 points uniform in z' from up s down to the fold's
  * z' - below s, s = max(|z'_fold|, a_fold^2/R) (the span of the
  * adversarial tester's generator), base offset z0, noise sig; *Fpo the
@@ -921,7 +926,7 @@ static double jkr_fold_any(const jkr_par *p)
 static int jkr_span(const jkr_par *p, double up, double below, int n, double z0, double sig, double *z, double *F,
                     double *Fpo)
 {
-    double af = jkr_fold_any(p), Ff, zf = jkr_z(p, af, &Ff, NULL), s, top, bot;
+    double af = jkr_fold(p), Ff, zf = jkr_z(p, af, &Ff, NULL), s, top, bot;
     int i;
     s = fabs(zf) > af * af / p->R ? fabs(zf) : af * af / p->R;
     top = up * s;
@@ -992,31 +997,18 @@ static void test_refuse_units(void **state)
 {
     static const double ups[3] = {0.5, 1.0, 2.0}, belows[2] = {0.3, 2.0};
     const jkr_par *p = &regimes[1];
-    mdr_contact_f64 c = paraboloid64(p->R);
-    mdr_contact_f32 c32;
-    mdr_fit_opts_f64 o;
-    mdr_fit_opts_f32 o32;
-    float pp[3] = {(float)p->R, 0, 0};
     int i, u, b;
     (void)state;
-    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
-    mdr_fit_defaults_f64(&o, p->km);
-    mdr_fit_defaults_f32(&o32, (float)p->km);
     for (u = 0; u < 3; u++) {
         for (b = 0; b < 2; b++) {
-            mdr_fit_result_f32 r32;
             double Fpo;
             int n = jkr_span(p, ups[u], belows[b], 1000, 1e-6, 0.0, zs, Fs, &Fpo);
             char what[64];
             for (i = 0; i < n; i++) {
                 zs[i] *= 1e9;
-                zs32[i] = (float)zs[i];
-                Fs32[i] = (float)Fs[i];
             }
             snprintf(what, sizeof what, "z in nm (up %.1f, below %.1f)", ups[u], belows[b]);
-            expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_MISFIT, what);
-            assert_int_equal(mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r32),
-                             MDR_E_MISFIT);
+            expect_fail_both(p->R, p->km, (uint32_t)n, MDR_E_MISFIT, what);
         }
     }
 }
@@ -1030,25 +1022,10 @@ static void test_refuse_units(void **state)
 static void test_refuse_runaway(void **state)
 {
     const jkr_par p = {2.97698e-5, 1.92274e11, 4.47239, 0.0799691};
-    mdr_contact_f64 c = paraboloid64(p.R);
-    mdr_contact_f32 c32;
-    mdr_fit_opts_f64 o;
-    mdr_fit_opts_f32 o32;
-    mdr_fit_result_f32 r32;
-    float pp[3] = {(float)p.R, 0, 0};
     double Fpo;
-    int i, n = jkr_span(&p, 2.176, 0.9695, 1000, 1e-6, 0.0, zs, Fs, &Fpo);
+    int n = jkr_span(&p, 2.176, 0.9695, 1000, 1e-6, 0.0, zs, Fs, &Fpo);
     (void)state;
-    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
-    mdr_fit_defaults_f64(&o, p.km);
-    mdr_fit_defaults_f32(&o32, (float)p.km);
-    expect_fail(&c, &o, zs, Fs, (uint32_t)n, 2 * NMAX, MDR_E_DEGENERATE, "soft lever runaway");
-    for (i = 0; i < n; i++) {
-        zs32[i] = (float)zs[i];
-        Fs32[i] = (float)Fs[i];
-    }
-    assert_int_equal(mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r32),
-                     MDR_E_DEGENERATE);
+    expect_fail_both(p.R, p.km, (uint32_t)n, MDR_E_DEGENERATE, "soft lever runaway");
 }
 
 /* opts.unpinned: no pinned top is looked for, every retract sample is
@@ -1067,7 +1044,7 @@ static void test_unpinned(void **state)
     (void)state;
     mdr_fit_defaults_f64(&o, p.km);
     o.unpinned = 1;
-    jkr_z(&p, jkr_fold_any(&p), &Ff, NULL);
+    jkr_z(&p, jkr_fold(&p), &Ff, NULL);
     for (j = 0; j < NMC; j++) {
         mdr_fit_result_f64 r;
         double Fpo, sig = 0.1 * fabs(Ff);
@@ -1121,7 +1098,7 @@ static void test_fit_sweep(void **state)
         p.R = pow(10.0, -9 + 7 * noise_uniform());
         p.km = pow(10.0, -2 + 4 * noise_uniform());
         {
-            double af = jkr_fold_any(&p), Ff, zf = jkr_z(&p, af, &Ff, NULL);
+            double af = jkr_fold(&p), Ff, zf = jkr_z(&p, af, &Ff, NULL);
             double ztop = 2.0 * fabs(zf) + jkr_z(&p, 2.5 * af, NULL, NULL), zbot = zf - 0.4 * (ztop - zf);
             z0 = 2 * (ztop - zbot);
             sig = noisy ? 0.01 * fabs(Ff) : 0.0;
