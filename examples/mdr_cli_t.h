@@ -292,29 +292,19 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
          * over the double unit, rounded; it also names NaN and inf): each
          * vertex, then each tick's value (the interpolation may round a
          * vertex's value by an ulp) */
-        const uint8_t q = A->control == MDR_CONTROL_GRIPS ? MDR_Q_D
-                          : A->control == MDR_CONTROL_LOAD ? MDR_Q_F : MDR_Q_Z;
-        const double unit = q == MDR_Q_D ? Q.D0 : q == MDR_Q_F ? Q.F0 : Q.Z0;
-        const char *un = q == MDR_Q_D ? "D0" : q == MDR_Q_F ? "F0" : "Z0", *si = q == MDR_Q_F ? "N" : "m";
-        int32_t raw = 0;
-        for (seg = 0; seg < A->npath; seg++) {
-            if (mdr_host_q31_raw(A->path[seg], unit, &raw) != MDR_OK) {
-                free(qnodes);
-                free(nodes);
+        const double unit = mdr_host_q31_unit(&Q, A->control);
+        const char *un = A->control == MDR_CONTROL_GRIPS ? "D0" : A->control == MDR_CONTROL_LOAD ? "F0" : "Z0",
+                   *si = A->control == MDR_CONTROL_LOAD ? "N" : "m";
+        if (mdr_host_q31_path(A->path, A->npath, A->steps, unit, INT32_MIN, &seg, &j) != MDR_OK) {
+            free(qnodes);
+            free(nodes);
+            if (j == 0) {
                 return usage_errf("--path value %ld (%.9g %s): outside the q31 input range +-2 %s = +-%.9g %s",
                                   seg + 1, A->path[seg], si, un, 2.0 * unit, si);
             }
-        }
-        for (seg = 0; seg + 1 < A->npath; seg++) {
-            for (j = seg == 0 ? 0 : 1; j <= A->steps; j++) {
-                const double v = mdr_host_path_value(A->path, A->steps, seg, j);
-                if (mdr_host_q31_raw(v, unit, &raw) != MDR_OK) {
-                    free(qnodes);
-                    free(nodes);
-                    return usage_errf("--path segment %ld, tick %ld (%.17g %s): outside the q31 input range "
-                                      "+-2 %s = +-%.17g %s", seg + 1, j, v, si, un, 2.0 * unit, si);
-                }
-            }
+            return usage_errf("--path segment %ld, tick %ld (%.17g %s): outside the q31 input range "
+                              "+-2 %s = +-%.17g %s", seg + 1, j, mdr_host_path_value(A->path, A->steps, seg, j), si,
+                              un, 2.0 * unit, si);
         }
     }
     if (A->summary != NULL) {

@@ -81,6 +81,58 @@ static inline mdr_status mdr_host_q31_raw(double v, double unit, int32_t *raw)
     return MDR_OK;
 }
 
+/** The q31 unit of the controlled value [m or N]: D0 (grips), F0 (load), Z0 (machine). */
+static inline double mdr_host_q31_unit(const mdr_host_q31 *q, uint8_t control)
+{
+    return control == MDR_CONTROL_GRIPS ? q->D0 : control == MDR_CONTROL_LOAD ? q->F0 : q->Z0;
+}
+
+/**
+ * @brief The first value of a path outside the q31 input range, by the
+ *        conversion the step makes (mdr_host_q31_raw()): each vertex, then
+ *        each tick of the interpolation (which may round a vertex's value by
+ *        an ulp), as `mdr cycle` steps them.
+ * @param raw_min   the least raw value accepted besides the range (a
+ *                   machine's z_min, below which a free body's depth
+ *                   saturates; INT32_MIN: none)
+ * @param[out] seg   that vertex (0-based; *tick = 0), or the segment of that
+ *                   tick (*tick in 1..steps); written unless MDR_OK
+ * @return MDR_OK, or mdr_host_q31_raw()'s status for that value
+ *         (MDR_E_OVERFLOW below raw_min)
+ */
+static inline mdr_status mdr_host_q31_path(const double *path, long npath, long steps, double unit, int32_t raw_min,
+                                           long *seg, long *tick)
+{
+    long s, j;
+    int32_t raw = 0;
+    mdr_status st;
+    for (s = 0; s < npath; s++) {
+        st = mdr_host_q31_raw(path[s], unit, &raw);
+        if (st == MDR_OK && raw < raw_min) {
+            st = MDR_E_OVERFLOW;
+        }
+        if (st != MDR_OK) {
+            *seg = s;
+            *tick = 0;
+            return st;
+        }
+    }
+    for (s = 0; s + 1 < npath; s++) {
+        for (j = 1; j <= steps; j++) {
+            st = mdr_host_q31_raw(mdr_host_path_value(path, steps, s, j), unit, &raw);
+            if (st == MDR_OK && raw < raw_min) {
+                st = MDR_E_OVERFLOW;
+            }
+            if (st != MDR_OK) {
+                *seg = s;
+                *tick = j;
+                return st;
+            }
+        }
+    }
+    return MDR_OK;
+}
+
 /**
  * @brief One tick of the q31 engine in SI: the controlled value v [m or N]
  *        converted to raw, the step, its outputs converted to SI in double.
@@ -95,7 +147,7 @@ static inline mdr_status mdr_host_q31_raw(double v, double unit, int32_t *raw)
 static inline mdr_status mdr_host_q31_step(mdr_host_q31 *q, uint8_t control, double v, int strict,
                                            mdr_step_f64 *o)
 {
-    const double unit = control == MDR_CONTROL_GRIPS ? q->D0 : control == MDR_CONTROL_LOAD ? q->F0 : q->Z0;
+    const double unit = mdr_host_q31_unit(q, control);
     int32_t raw = 0;
     mdr_step_q31 s;
     mdr_status st = mdr_host_q31_raw(v, unit, &raw);

@@ -198,8 +198,7 @@ static inline mdr_status HOST_SFX(mdr_host_q31_fits)(const HOST_SFX(mdr_table) *
                                                      long npath, long steps)
 {
     const int machine = control != MDR_CONTROL_GRIPS && control != MDR_CONTROL_LOAD;
-    double unit;
-    long i;
+    long seg, tick;
     mdr_status st = HOST_SFX(mdr_table_q31_from)(&q->t, qnodes, tab);
     if (st == MDR_OK) {
         st = HOST_SFX(mdr_engine_init_q31)(&q->e, &q->t, (HOST_T)E, (HOST_T)w, (HOST_T)w_adv, (HOST_T)k_m);
@@ -208,22 +207,8 @@ static inline mdr_status HOST_SFX(mdr_host_q31_fits)(const HOST_SFX(mdr_table) *
         return st;
     }
     mdr_host_q31_units(q, E);
-    unit = control == MDR_CONTROL_GRIPS ? q->D0 : control == MDR_CONTROL_LOAD ? q->F0 : q->Z0;
-    /* each vertex, then each tick (the interpolation may round a vertex's
-     * value by an ulp), as `mdr cycle` checks them */
-    for (i = 0; i < npath + (npath - 1) * steps; i++) {
-        const long seg = i < npath ? 0 : (i - npath) / steps, j = i < npath ? 0 : (i - npath) % steps + 1;
-        const double v = i < npath ? path[i] : mdr_host_path_value(path, steps, seg, j);
-        int32_t raw = 0;
-        st = mdr_host_q31_raw(v, unit, &raw);
-        if (st != MDR_OK) {
-            return st;
-        }
-        if (machine && q->e.machine && raw < q->e.z_min) {
-            return MDR_E_OVERFLOW;
-        }
-    }
-    return MDR_OK;
+    return mdr_host_q31_path(path, npath, steps, mdr_host_q31_unit(q, control),
+                             machine && q->e.machine ? q->e.z_min : INT32_MIN, &seg, &tick);
 }
 
 /** The number of doublings of the default extent the q31 rule tries. */

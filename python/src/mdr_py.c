@@ -204,10 +204,7 @@ mdr_status mdrpy_check_path(const mdrpy_engine *x, uint8_t control, const double
         } else if (x->arith == MDRPY_Q31) {
             const mdr_host_q31 *q = &x->q;
             int32_t raw;
-            st = mdr_host_q31_raw(v, control == MDR_CONTROL_GRIPS  ? q->D0
-                                     : control == MDR_CONTROL_LOAD ? q->F0
-                                                                   : q->Z0,
-                                  &raw);
+            st = mdr_host_q31_raw(v, mdr_host_q31_unit(q, control), &raw);
         }
         if (st != MDR_OK) {
             *bad = i;
