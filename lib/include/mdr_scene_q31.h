@@ -64,6 +64,7 @@ typedef struct {
                                max(-2^30, -2^(31-sz)), so that z 2^sz fits (INT32_MAX without a machine) */
     int32_t z_mul;        /**< 2^sz: a separated machine's depth d = z 2^sz (Q2.29 of D0) */
     int32_t nu, in1;      /**< n/(n+1), 1/(n+1), Q1.30 */
+    int32_t kn_z;         /**< ka_z nu rounded, Q1.30: the machine branch's weight of nu g x */
     int32_t t1;           /**< sqrt(a_s/L), Q1.30: where a root search from a = 0 starts */
     int32_t tf[3];        /**< the retraction branch's fold, tau Q1.30: load, grips, machine */
     int32_t uf[3];        /**< the branch there, Q2.29 (rounded up: below it a receding
