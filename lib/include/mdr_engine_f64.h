@@ -153,6 +153,13 @@ typedef struct {
  *        closed forms (mdr_profile_eval()), q_i by 2-point Gauss-Legendre on
  *        each spring (error O(h^5 g'''') per spring), G_i as compensated
  *        prefix sums of the spring integrals (so G is consistent with g).
+ *        Where g' is smooth, g_{i+1} - g_i and q_i come from g' (Gauss
+ *        on g'), not from differences of values of g, which cancel by x/h:
+ *        g_i is then the compensated sum of those increments, within the
+ *        rounding of the closed form's value at x_i (it is reset to it
+ *        otherwise), and the engine's g' in a spring is exact but for the
+ *        storage of g_i (f32: |dg'|/g' <= 2^-24 (|g_i| + |g_{i+1}|)/(h g'),
+ *        which a fixed-grips pull-off feels to first order; engine.md).
  * @param[out] tab   table header; untouched unless MDR_OK
  * @param[out] node  caller storage of MDR_TABLE_NODES(n) nodes
  * @param[in]  n     springs, MDR_SPRINGS_MIN..MDR_SPRINGS_MAX
@@ -193,7 +200,9 @@ mdr_status mdr_table_init_profile_f64(mdr_table_f64 *tab, mdr_node_f64 *node,
  * enters). The first kink of the samples (a worn flat's rim) is put on a
  * node by shortening the table by less than one part in k, k the springs
  * below it (as mdr_table_init_profile()): its flat-edge separation is then
- * Kendall's to rounding. Cost O(n*m) at init.
+ * Kendall's to rounding. The springs' g increments and q_i are taken from
+ * the model's g' where it is smooth (as mdr_table_init_profile()). Cost
+ * O(n*m) at init.
  * @param[out] tab  table header; untouched unless MDR_OK
  * @param[out] node caller storage of MDR_TABLE_NODES(n) nodes
  * @param[in] n  springs, MDR_SPRINGS_MIN..MDR_SPRINGS_MAX
