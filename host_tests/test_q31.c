@@ -43,6 +43,11 @@
  *     width h resolve only to O(h^1.5). Its pull-offs meet GOAL_SMOOTH
  *     (measured 1.1e-6): the table puts the rim on a node (issue 16; 3.7e-3
  *     with the rim inside a spring).
+ *   the adhesion limit MDR_Q31_ADH_LSB (adhesion_limit): the least w that
+ *     init accepts, found by bisection, has a JKR pull-off (exact on a
+ *     paraboloid's table) of 1 to ADH_FLIP_MAX = 1.05 times the limit
+ *     (measured 1.000 to 1.039: the least F over 16 points a spring, a
+ *     flat minimum; below 1 an unresolved adhesion would be accepted);
  * The engine is set up by mdr_engine_init_q31_f64 (constants to 2^-30);
  * inputs are converted to Q2.29 with double arithmetic (rounded), outputs
  * back to SI the same way, with the double units L + L_lo and 2E* L D0.
@@ -253,11 +258,15 @@ static void scenes_vs_ref(void **st)
  * within TOL_LSB of the f64 engine on the same table, as the scenes do. */
 static void adhesion_range(void **st)
 {
-    static const double f[] = {2.0, 5.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0};
+    /* the table's extent in pull-off radii and its springs: the last two
+     * with the fold inside spring 0 (every node's F >= 0 on the retraction
+     * branch: the pull-off is found between nodes, mdr_q_pull_lsb) */
+    static const double f[] = {2.0, 5.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 12.0, 30.0};
+    static const uint16_t ns[] = {256, 256, 256, 256, 256, 256, 256, 256, 8, 8};
     const double R = 10e-6, E = 1e6, w = 0.05, Fpo = 1.5 * 3.14159265358979323846 * w * R;
     const double apo = cbrt(9.0 * 3.14159265358979323846 * w * R * R / (8.0 * E));
     const double pd[3] = {R, 0, 0};
-    int i, k, accepted = 0, refused = 0;
+    int i, k, accepted = 0, refused = 0, in0 = 0;
     double worst = 0.0;
     (void)st;
     for (i = 0; i < (int)(sizeof f / sizeof f[0]); i++) {
@@ -270,7 +279,7 @@ static void adhesion_range(void **st)
         {
             mdr_contact_f64 c;
             assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, pd, E, w), MDR_OK);
-            assert_int_equal(mdr_table_init_profile_f64(&t64, nf, 256, &c, f[i] * apo), MDR_OK);
+            assert_int_equal(mdr_table_init_profile_f64(&t64, nf, ns[i], &c, f[i] * apo), MDR_OK);
         }
         assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
         L = (double)tq.L + (double)tq.L_lo;
@@ -309,11 +318,60 @@ static void adhesion_range(void **st)
         worst = fmax(worst, fabs(poq - po64) / ((double)q.F0 / 536870912.0));
         assert_true(fabs(poq - po64) <= TOL_LSB * ((double)q.F0 / 536870912.0));
         accepted++;
+        in0 += f[i] > (double)ns[i];
     }
     printf("  q31 engine's adhesion against the table's extent: %d accepted, %d refused (below %d LSB); worst "
            "pull-off %.1f LSB (tolerance %.0f)\n",
            accepted, refused, MDR_Q31_ADH_LSB, worst, TOL_LSB);
-    assert_true(accepted >= 3 && refused >= 2);
+    assert_true(accepted >= 3 && refused >= 2 && in0 == 2);
+}
+
+/* Where init's refusal of an unresolved adhesion sets in: bisect w to the
+ * least that init accepts on a paraboloid's table (coarse and fine, the
+ * fold at that w in spring 0 of 8 springs, in spring 0 or 1 of 32) and
+ * compare its JKR pull-off force, in LSB of that engine's force, with
+ * MDR_Q31_ADH_LSB: at or above it (no unresolved adhesion accepted), and
+ * within ADH_FLIP_MAX of it (no resolved one refused) */
+#define ADH_FLIP_MAX 1.05
+static void adhesion_limit(void **st)
+{
+    static const double f[] = {4.0, 10.0, 100.0};
+    static const uint16_t ns[] = {8, 32};
+    const double R = 10e-6, E = 1e6, w0 = 0.05, pi = 3.14159265358979323846;
+    const double apo = cbrt(9.0 * pi * w0 * R * R / (8.0 * E)), pd[3] = {R, 0, 0};
+    double lo_w = 1.0, hi_w = 0.0;
+    int i, j, k;
+    (void)st;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 2; j++) {
+            mdr_contact_f64 c;
+            mdr_table_f64 t64;
+            mdr_table_q31 tq;
+            mdr_engine_q31 q;
+            double lo = 1e-9, hi = 10.0, r;
+            assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, pd, E, w0), MDR_OK);
+            assert_int_equal(mdr_table_init_profile_f64(&t64, nf, ns[j], &c, f[i] * apo), MDR_OK);
+            assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+            assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, lo, lo, 0.0), MDR_E_PARAM);
+            assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, hi, hi, 0.0), MDR_OK);
+            for (k = 0; k < 60; k++) {
+                const double m = sqrt(lo * hi);
+                if (mdr_engine_init_q31_f64(&q, &tq, E, m, m, 0.0) == MDR_OK) {
+                    hi = m;
+                } else {
+                    lo = m;
+                }
+            }
+            assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, hi, hi, 0.0), MDR_OK);
+            r = 1.5 * pi * hi * R / ((double)q.F0 / 536870912.0) / MDR_Q31_ADH_LSB;
+            lo_w = fmin(lo_w, r);
+            hi_w = fmax(hi_w, r);
+            assert_true(r >= 1.0 - 1e-6 && r <= ADH_FLIP_MAX);
+        }
+    }
+    printf("  q31 engine's least accepted adhesion: its pull-off %.4f to %.4f times MDR_Q31_ADH_LSB "
+           "(tolerance 1 to %.2f)\n",
+           lo_w, hi_w, ADH_FLIP_MAX);
 }
 #endif /* MDR_TARGET_TEST */
 
@@ -562,6 +620,7 @@ int main(void)
         cmocka_unit_test(machine_band_near_end),
 #ifndef MDR_TARGET_TEST
         cmocka_unit_test(adhesion_range),
+        cmocka_unit_test(adhesion_limit),
         cmocka_unit_test(scenes_vs_ref),
 #endif
     };
