@@ -85,8 +85,9 @@ typedef struct {
                            the Jacobian at the result: s^2 (J^T J)^-1, s^2 = sum
                            of squared residuals/(n-4), with the fold's position
                            between the last contact and the first free sample
-                           as a nuisance of at most that interval's spread
-                           (mdr_fit.inc) */
+                           as a nuisance of at most that interval's spread, and
+                           that spread where the result is no minimum in the
+                           fold's position (mdr_fit.inc, docs/fitting.md) */
     float rms;        /**< root mean square residual force over the n points [N] */
     float pull_off_F; /**< the model's pull-off force (at the fold), relative to
                            the baseline [N] (negative) */
