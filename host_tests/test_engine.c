@@ -1022,6 +1022,28 @@ static void flat_punch_wall(void **st)
 #define TOL_RIM32 1e-5
 #define TOL_RIM_MACHINE 1e-5
 
+/* A sampled tip whose first kink lies below the first node (a spike of
+ * 2 m in 1e-27 m, found by fuzz_table): the table starts at g(0) = 0 (the
+ * gap builder evaluated node 0 at that kink, g_0 = pi), and a grips step
+ * pins the edge where d = g(a) - c t on the table's own quadratic */
+static void gap_spike_below_first_node(void **st)
+{
+    static const double r[] = {0.0, 1e-27, 1e-6, 5.2e-6}, f[] = {0.0, 2.0, 0.0, 4.232};
+    mdr_table_f64 t;
+    mdr_engine_f64 e;
+    mdr_step_f64 o;
+    (void)st;
+    assert_int_equal(mdr_table_init_gap_f64(&t, nodes64, 4, r, f, 4), MDR_OK);
+    assert_true(nodes64[0].g == 0.0);
+    assert_int_equal(mdr_engine_init_f64(&e, &t, 2.955e8, 0.0131, 0.0131, 0.0), MDR_OK);
+    assert_int_equal(mdr_engine_step_d_f64(&e, 0.38, &o), MDR_OK);
+    assert_true(e.contact);
+    /* pinned in the Hess band (here w = w_adv): d = g - c t at the edge,
+     * to the rounding of the root (fuzz_engine_t.h's check) */
+    assert_true(e.a > 0.0 && e.k < 4u);
+    assert_true(fabs(e.d - (e.g - e.c_w * e.t)) <= 1e-12 * (fabs(e.g) + fabs(e.d)));
+}
+
 static void rims_on_nodes(void **st)
 {
     const double pd[3] = {1e-6, 0.2e-6, 0}, b = 0.2e-6, E = 1e6, w = 0.01;
@@ -1365,6 +1387,7 @@ int main(void)
         cmocka_unit_test(wavy_seed_fig_4_9),
         cmocka_unit_test(flat_punch_wall),
         cmocka_unit_test(rims_on_nodes),
+        cmocka_unit_test(gap_spike_below_first_node),
         cmocka_unit_test(gap_table_exact_for_quadratic),
         cmocka_unit_test(gap_table_order),
         cmocka_unit_test(generated_table_matches),
