@@ -247,6 +247,128 @@ static void scenes_vs_ref(void **st)
            worst[0], worst[2], worst[1], worst[3], worst[4]);
 }
 
+/* The two jumps that cross the table, known from init (the engine's u_min,
+ * t_in, k_in, t_fold, u_fold, k_fold: the first touch's landing, a
+ * pull-off's end of contact, the retraction branch's outermost fold),
+ * against the step's own scans: every scene and control, two cycles each
+ * (the second touch lands from a = 0 again), w_adv = w/2, the engine as
+ * init left it and a copy with nothing known (k_in = k_fold = 0xFFFF,
+ * u_min below every U: the step scans) equal bit for bit at every tick
+ * (the known values are those scans' own results: any difference is a
+ * defect, tolerance 0), and the same number of jumps in each cycle as the
+ * f64 engine on the same table (a landing skipped or a pull-off missed in
+ * both q31 engines: the known one's test and the copy's share code). And against closed forms, the paraboloid under
+ * fixed grips (g = a^2/R, d = g - sqrt(2 pi w a/E*), seed 4.19): the
+ * first touch lands at d = 0 on the approach branch, a_in^(3/2) =
+ * R sqrt(2 pi w_adv/E*), and the retraction branch folds at dd/da = 0,
+ * a_f^(3/2) = (R/4) sqrt(2 pi w/E*). Tolerances: a_in within TOL_KNOWN_IN
+ * = 1e-6 relative (its target is U(0) plus U's rounding bound, 4 LSB of
+ * D0, a relative shift of 4 2^-29 D0/(a dd/da) ~ 1e-8 here, and t to an
+ * ulp of Q1.30); a_f within TOL_KNOWN_FOLD = 1e-4 relative (at a fold d
+ * is flat: a rounding dU of a few LSB moves it by sqrt(2 dU/U''), ~2^-14
+ * of t); u_fold within 8 LSB below d(a_f) (its rounding bound 4, subtracted
+ * by init, plus the rounding of d itself). */
+#define TOL_KNOWN_IN 1e-6
+#define TOL_KNOWN_FOLD 1e-4
+static void known_jumps(void **st)
+{
+    size_t k;
+    int ctl, ticks = 0, jumps = 0;
+    double wa_in = 0.0, wa_f = 0.0, wu_f = 0.0;
+    (void)st;
+    for (k = 0; k < NSCENES; k++) {
+        const scene *sc = &scenes[k];
+        mdr_table_f64 t64;
+        mdr_table_q31 tq;
+        scene_path P;
+        build(sc, &t64);
+        assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+        assert_int_equal(scene_path_of(sc, &t64, 400, 800, &P), MDR_OK);
+        for (ctl = 1; ctl <= 3; ctl++) {
+            const double km = ctl == MDR_CONTROL_MACHINE ? P.km : 0.0;
+            mdr_engine_q31 q, u;
+            mdr_engine_f64 e;
+            int i, cyc, jq = 0, jf = 0;
+            assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, sc->s.E, sc->s.w, 0.5 * sc->s.w, km), MDR_OK);
+            assert_int_equal(mdr_engine_init_f64(&e, &t64, sc->s.E, sc->s.w, 0.5 * sc->s.w, km), MDR_OK);
+            /* (a first touch's landing is known, but the flat punch's: at
+             * its rim, a node, which init does not keep) */
+            assert_true(sc->s.kind == MDR_PROFILE_FLATPUNCH || q.k_in[ctl - 1] != 0xFFFFu);
+            u = q;
+            for (i = 0; i < 3; i++) {
+                u.k_in[i] = u.k_fold[i] = 0xFFFFu;
+                u.u_min[i] = INT64_MIN / 4;
+            }
+            for (cyc = 0; cyc < 2; cyc++) {
+                for (i = 1; i <= 1200; i++) {
+                    const double v = scene_u(&P, ctl, 400, 800, i);
+                    const uint8_t qu = ctl == MDR_CONTROL_LOAD ? MDR_Q_F : ctl == MDR_CONTROL_GRIPS ? MDR_Q_D : MDR_Q_Z;
+                    const double unit = qu == MDR_Q_F ? (double)q.F0 : qu == MDR_Q_D ? (double)q.D0 : (double)q.Z0;
+                    const int32_t r = q29(v, unit);
+                    mdr_step_q31 oq, ou;
+                    mdr_step_f64 of;
+                    mdr_status sq, su;
+                    assert_int_equal(ctl == MDR_CONTROL_LOAD    ? mdr_engine_step_F_f64(&e, v, &of)
+                                     : ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_f64(&e, v, &of)
+                                                                : mdr_engine_step_z_f64(&e, v, &of),
+                                     MDR_OK);
+                    jf += of.jumps;
+                    sq = ctl == MDR_CONTROL_LOAD    ? mdr_engine_step_F_q31(&q, r, &oq)
+                         : ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_q31(&q, r, &oq)
+                                                    : mdr_engine_step_z_q31(&q, r, &oq);
+                    su = ctl == MDR_CONTROL_LOAD    ? mdr_engine_step_F_q31(&u, r, &ou)
+                         : ctl == MDR_CONTROL_GRIPS ? mdr_engine_step_d_q31(&u, r, &ou)
+                                                    : mdr_engine_step_z_q31(&u, r, &ou);
+                    assert_int_equal(sq, su);
+                    assert_int_equal(oq.d, ou.d);
+                    assert_int_equal(oq.F, ou.F);
+                    assert_int_equal(oq.a, ou.a);
+                    assert_int_equal(oq.event, ou.event);
+                    assert_int_equal(oq.jumps, ou.jumps);
+                    assert_int_equal(q.t, u.t);
+                    assert_int_equal(q.k, u.k);
+                    ticks++;
+                    jumps += oq.jumps;
+                    jq += oq.jumps;
+                }
+            }
+            /* the f64 engine on the same table: the same jumps (a jump the
+             * q31 engine took for the end of contact, or missed, shows) */
+            assert_int_equal(jq, jf);
+        }
+    }
+    {
+        /* the closed forms: the paraboloid scene under fixed grips */
+        const scene *sc = &scenes[0];
+        const double R = sc->s.p[0], E = sc->s.E, w = sc->s.w, wa = 0.5 * w;
+        const double a_in = cbrt(R * R * 2.0 * M_PI * wa / E), a_f = cbrt(R * R * 2.0 * M_PI * w / E / 16.0);
+        const double d_f = a_f * a_f / R - sqrt(2.0 * M_PI * w * a_f / E);
+        const unsigned gi = MDR_CONTROL_GRIPS - 1u;
+        mdr_table_f64 t64;
+        mdr_table_q31 tq;
+        mdr_engine_q31 q;
+        double L, ti, tf;
+        assert_true(sc->s.kind == MDR_PROFILE_PARABOLOID);
+        build(sc, &t64);
+        assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+        assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, w, wa, 0.0), MDR_OK);
+        assert_true(q.k_in[gi] != 0xFFFFu && q.k_fold[gi] != 0xFFFFu);
+        L = (double)tq.L + (double)tq.L_lo;
+        ti = q.t_in[gi] / 1073741824.0;
+        tf = q.t_fold[gi] / 1073741824.0;
+        wa_in = fabs(L * ti * ti / a_in - 1.0);
+        wa_f = fabs(L * tf * tf / a_f - 1.0);
+        wu_f = (d_f / ((double)q.D0 / 536870912.0)) - (double)q.u_fold[gi];
+        err_le(wa_in, TOL_KNOWN_IN, "paraboloid grips: first touch's landing a_in (relative)");
+        err_le(wa_f, TOL_KNOWN_FOLD, "paraboloid grips: retraction fold a_f (relative)");
+        assert_true(wu_f >= 0.0);
+        err_le(wu_f, 8.0, "paraboloid grips: d(a_f) - u_fold, LSB of D0");
+    }
+    printf("  known jumps: %d ticks over %zu scenes x 3 controls, %d jumps, known = scanned bit for bit;\n"
+           "  paraboloid grips: a_in %.1e, a_f %.1e (relative), d(a_f) - u_fold %.1f LSB\n",
+           ticks, NSCENES, jumps, wa_in, wa_f, wu_f);
+}
+
 /* The adhesion's resolution against the table's extent (MDR_Q31_ADH_LSB):
  * a paraboloid, R = 10 um, E* = 1e6 Pa, w = w_adv = 0.05 J/m^2, 256
  * springs to L = f a_po (a_po its JKR pull-off radius under fixed load,
@@ -621,6 +743,7 @@ int main(void)
 #ifndef MDR_TARGET_TEST
         cmocka_unit_test(adhesion_range),
         cmocka_unit_test(adhesion_limit),
+        cmocka_unit_test(known_jumps),
         cmocka_unit_test(scenes_vs_ref),
 #endif
     };

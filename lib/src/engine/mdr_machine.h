@@ -20,4 +20,14 @@ enum { MDR_M_ROOT, MDR_M_FOLD, MDR_M_END };
 /* 1 where the solver's moves leave control ctl's coefficients stale */
 #define MDR_M_LAZY_IN(ctl) ((MDR_M_LAZY >> (ctl)) & 1u)
 
+/* k_in, k_fold of a control mode whose landing or fold is not known
+ * (the engines' known_land, known_fold: the step scans) */
+#define MDR_E_NO_LANDING 0xFFFFu
+
+#if MDR_CFG_Q31 && MDR_CFG_ENGINE
+/* the q31 engine's landings (mdr_edge_table.inc, in mdr_q31.c), which its
+ * float init (engine/mdr_q31_init.inc) calls on the filled instance */
+void mdr_t_landings_q31(mdr_engine_q31 *s);
+#endif
+
 #endif /* MDR_MACHINE_H */
