@@ -87,7 +87,10 @@ typedef struct {
                            between the last contact and the first free sample
                            as a nuisance of at most that interval's spread, and
                            that spread where the result is no minimum in the
-                           fold's position (mdr_fit.inc, docs/fitting.md) */
+                           fold's position (mdr_fit.inc, docs/fitting.md);
+                           MDR_FIT_TWO_POINT: its two measurements' noise and
+                           rounding and the step from the last contact sample
+                           to the fold, propagated through the method */
     double rms;        /**< root mean square residual force over the n points [N] */
     double pull_off_F; /**< the model's pull-off force (at the fold), relative to
                            the baseline [N] (negative) */
@@ -164,7 +167,9 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   settled in 8 refits), MDR_E_DEGENERATE (the
  *   data do not determine the four parameters: singular equations, or a
  *   relative standard error of E* or w of 1 or more; or the two-point
- *   equations have no solution), MDR_E_MISFIT (the full fit only: the
+ *   equations have no solution, for MDR_FIT_TWO_POINT also not 3 noise
+ *   errors from its measurements, or its noise alone gives ln E* an error
+ *   above 0.5), MDR_E_MISFIT (the full fit only: the
  *   fitted model does not reproduce the curve, its rms residual beyond
  *   MDR_FIT_NOISE_SIGMAS noise widths plus MDR_FIT_MISFIT_REL of the
  *   force scale), MDR_E_JUMPS (the retract jumps before the pull-off),
