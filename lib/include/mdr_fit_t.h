@@ -119,7 +119,8 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  * MDR_FIT_FULL answers only where the model reproduces the curve (rms
  * residual at most MDR_FIT_NOISE_SIGMAS noise widths plus
  * MDR_FIT_MISFIT_REL of the largest retract force, else MDR_E_MISFIT) and
- * the data determine E* and w (relative standard errors below 1, else
+ * the data determine E* and w (relative standard errors below 1, and for
+ * E* the sum of squares' profile bounding it within a factor 20, else
  * MDR_E_DEGENERATE): a minimum Levenberg-Marquardt converges to from a
  * poor first guess, z not in metres, or E* run off toward the rigid limit
  * is refused, never answered. (5) opts->approach: w_adv >= 0 fitted to
@@ -148,7 +149,9 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  *   fits that fail: MDR_E_FITCAP (iteration cap, or a pinned top's end not
  *   settled in 8 refits), MDR_E_DEGENERATE (the
  *   data do not determine the four parameters: singular equations, or a
- *   relative standard error of E* or w of 1 or more; or the two-point
+ *   relative standard error of E* or w of 1 or more, or (full fit, E*'s
+ *   above 0.1) a profile of the sum of squares in ln E* that does not rise
+ *   by 3 errors within a factor 20 either way; or the two-point
  *   equations have no solution, for MDR_FIT_TWO_POINT also not 3 noise
  *   errors from its measurements, or its noise alone gives ln E* an error
  *   above 0.5), MDR_E_MISFIT (the full fit only: the
