@@ -241,6 +241,13 @@ static int jkr_curve(const jkr_par *p, double z0, double Fb, int n, double *z, d
     return last;
 }
 
+/* how many reported errors v lies from the truth, in ln v (err: v's
+ * standard error) */
+static double nerr(double v, double truth, double err)
+{
+    return fabs(log(v / truth)) / (err / v);
+}
+
 /* A retract of n samples uniform in z' over jkr_curve's span, with the
  * grid shifted so that the fold lies the fraction `at` of a step below a
  * sample; Gaussian noise of sig_rel |F_po|; base offset twice the span.
@@ -627,8 +634,8 @@ static void test_two_point_errors(void **state)
                         }
                         continue;
                     }
-                    dE = fabs(log(E / p.E)) / (Ee / E);
-                    dw = fabs(log(w / p.w)) / (we / w);
+                    dE = nerr(E, p.E, Ee);
+                    dw = nerr(w, p.w, we);
                     d = dE > dw ? dE : dw;
                     ok++;
                     out3 += d > 3;
@@ -682,7 +689,7 @@ static void test_two_point_errors(void **state)
             o.method = MDR_FIT_TWO_POINT;
             st = mdr_fit_curve_f64(&tip, &o, zs, Fs, (uint32_t)cases[c].n, work64, 2 * NMAX, &r);
             if (st == MDR_OK) {
-                const double dE = fabs(log(r.E / p.E)) / (r.E_err / r.E), dw = fabs(log(r.w / p.w)) / (r.w_err / r.w);
+                const double dE = nerr(r.E, p.E, r.E_err), dw = nerr(r.w, p.w, r.w_err);
                 if (!(dE <= TP_COVER && dw <= TP_COVER)) {
                     fail_msg("two-point case %u: E* %.6g +- %.2g (%.1f errors), w %.6g +- %.2g (%.1f errors)",
                              (unsigned)c, r.E, r.E_err, dE, r.w, r.w_err, dw);
@@ -1473,7 +1480,7 @@ static void test_cover_fold(void **state)
             o.unpinned = 1;
             st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
             if (st == MDR_OK) {
-                const double dE = fabs(log(r.E / p.E)) / (r.E_err / r.E), dw = fabs(log(r.w / p.w)) / (r.w_err / r.w);
+                const double dE = nerr(r.E, p.E, r.E_err), dw = nerr(r.w, p.w, r.w_err);
                 const double d = dE > dw ? dE : dw;
                 ok++;
                 out3 += d > 3;
@@ -1549,7 +1556,7 @@ static void test_refuse_valley(void **state)
         o.unpinned = 1;
         st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
         if (st == MDR_OK) {
-            const double dE = fabs(log(r.E / p.E)) / (r.E_err / r.E), dw = fabs(log(r.w / p.w)) / (r.w_err / r.w);
+            const double dE = nerr(r.E, p.E, r.E_err), dw = nerr(r.w, p.w, r.w_err);
             const double d = dE > dw ? dE : dw;
             ok++;
             okprof += r.E_err > 0.1 * r.E; /* answered through the profile's check */
