@@ -1295,6 +1295,173 @@ static void test_refuse_runaway(void **state)
     expect_fail_both(p.R, p.km, (uint32_t)n, MDR_E_DEGENERATE, "soft lever runaway");
 }
 
+/* Curves in reversed time order (rev_curve: the library's forward model,
+ * paraboloid; the approach with w_adv from 0.4 of the span below the fold
+ * to the top, the retract (w) back down, na and nr samples; noise of
+ * sig_rel of the fold's force on both), over jkr_curve's span. Returns the
+ * retract's start. */
+static int rev_curve(const jkr_par *p, double wadv, int na, int nr, double sig_rel, double *z, double *F)
+{
+    mdr_contact_f64 ca, cr;
+    mdr_critstate_f64 cs;
+    mdr_eqstate_f64 e;
+    double pp[3] = {p->R, 0, 0}, as, zf, ztop, zbot, z0 = 2e-6;
+    int i;
+    assert_int_equal(mdr_contact_init_f64(&cr, MDR_PROFILE_PARABOLOID, pp, p->E, p->w), MDR_OK);
+    assert_int_equal(mdr_contact_init_f64(&ca, MDR_PROFILE_PARABOLOID, pp, p->E, wadv), MDR_OK);
+    assert_int_equal(mdr_default_start_f64(&cr, &as), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&cr, MDR_CONTROL_MACHINE, p->km, as, &cs), MDR_OK);
+    assert_int_equal(mdr_eq_f64(&cr, 2.5 * cs.a, &e), MDR_OK);
+    zf = cs.d + cs.F / p->km;
+    ztop = 2.0 * fabs(zf) + e.d + e.F / p->km; /* jkr_curve's span */
+    zbot = zf - 0.4 * (ztop - zf);
+    for (i = 0; i < na; i++) {
+        z[i] = z0 + zbot + (ztop - zbot) * i / (na - 1);
+    }
+    for (i = 0; i < nr; i++) {
+        z[na + i] = z0 + ztop + (zbot - ztop) * i / (nr - 1);
+    }
+    assert_int_equal(mdr_fit_model_f64(&ca, p->km, z0, 0.0, MDR_FIT_APPROACH, z, (uint32_t)na, F), MDR_OK);
+    assert_int_equal(mdr_fit_model_f64(&cr, p->km, z0, 0.0, MDR_FIT_RETRACT, z + na, (uint32_t)nr, F + na), MDR_OK);
+    for (i = 0; i < na + nr; i++) {
+        F[i] += sig_rel * fabs(cs.F) * gauss();
+    }
+    return na;
+}
+
+static void reverse(double *v, int n)
+{
+    int i;
+    for (i = 0; i < n / 2; i++) {
+        double t = v[i];
+        v[i] = v[n - 1 - i];
+        v[n - 1 - i] = t;
+    }
+}
+
+/* status of the f64 and the f32 fit of zs, Fs (n samples) */
+static void fit_both(const jkr_par *p, uint32_t n, int approach, mdr_status *st64, mdr_status *st32)
+{
+    mdr_contact_f64 c = paraboloid64(p->R);
+    mdr_contact_f32 c32;
+    mdr_fit_opts_f64 o;
+    mdr_fit_opts_f32 o32;
+    mdr_fit_result_f64 r;
+    mdr_fit_result_f32 r32;
+    const float pp[3] = {(float)p->R, 0, 0};
+    uint32_t i;
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
+    mdr_fit_defaults_f64(&o, p->km);
+    mdr_fit_defaults_f32(&o32, (float)p->km);
+    o.approach = o32.approach = (uint8_t)approach;
+    for (i = 0; i < n; i++) {
+        zs32[i] = (float)zs[i];
+        Fs32[i] = (float)Fs[i];
+    }
+    *st64 = mdr_fit_curve_f64(&c, &o, zs, Fs, n, work64, 2 * NMAX, &r);
+    *st32 = mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, n, work32, 2 * NMAX, &r32);
+}
+
+/* A curve passed in reversed time order is refused with MDR_E_ORDER, never
+ * answered (before: an adhesive approach read backwards, which looks like
+ * a retract, answered "ok" with w 16 to 44 x low noise-free; a reversed
+ * retract, or an approach alone, refused as MDR_E_FEW). Swept over the
+ * regimes with E* x 0.3, 1, 3, w_adv/w = 1, 0.5, 0.25, 300 and 1 000
+ * samples, f64 and f32:
+ *   - the whole curve reversed (approach and retract; noise 0, 0.1 %, 1 %
+ *     of the fold's force): MDR_E_ORDER (the retract's last contact sample
+ *     above where its approach first touched; or MDR_E_NOPULLOFF where
+ *     the jump-in is below a sample's or the noise's resolution), with and without
+ *     opts.approach; the same curve in time order (w_adv = w) fits
+ *     noise-free (f64) and is never MDR_E_ORDER;
+ *   - the approach alone, reversed (noise-free): never MDR_OK (MDR_E_ORDER
+ *     where the fit answered before: the pull-off no fold; else
+ *     MDR_E_MISFIT, MDR_E_NOPULLOFF, in f32 also MDR_E_DEGENERATE; f32
+ *     answers where its z does not resolve the sampling step, 256 eps |z|
+ *     beyond it: the DMT contacts sampled every 0.1 pm at a 2 um offset);
+ *   - z rising to the last sample (an approach alone in time order, a
+ *     retract reversed): MDR_E_ORDER. */
+static void test_reversed(void **state)
+{
+    static const double Ef[3] = {0.3, 1.0, 3.0}, wa[3] = {1.0, 0.5, 0.25}, sigs[3] = {0.0, 1e-3, 1e-2};
+    static const int sizes[2] = {300, 1000};
+    int k, ie, ia, is, s, n_app = 0, n_app_order = 0, n_full = 0, n_full_order = 0;
+    const uint64_t seed = noise_state; /* restored: the later tests' noise as before */
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        for (ie = 0; ie < 3; ie++) {
+            jkr_par p = regimes[k];
+            p.E *= Ef[ie];
+            for (ia = 0; ia < 3; ia++) {
+                for (s = 0; s < 2; s++) {
+                    const int n = sizes[s];
+                    mdr_status a, b;
+                    for (is = 0; is < 3; is++) {
+                        int ap;
+                        rev_curve(&p, wa[ia] * p.w, n, n, sigs[is], zs, Fs);
+                        if (ia == 0) { /* in time order (no pinned top): f64 answers noise-free;
+                                          * never MDR_E_ORDER (noisy: MDR_E_PINNED where the retract
+                                          * is straight within its noise; f32 with the DMT contact
+                                          * 0.1 pm per sample: MDR_E_DEGENERATE) */
+                            fit_both(&p, (uint32_t)(2 * n), 0, &a, &b);
+                            if ((is == 0 && a != MDR_OK) || a == MDR_E_ORDER || b == MDR_E_ORDER) {
+                                fail_msg("in time order, regime %d, E* x %g, n %d, noise %g: status %d, %d", k,
+                                         Ef[ie], n, sigs[is], a, b);
+                            }
+                        }
+                        reverse(zs, 2 * n);
+                        reverse(Fs, 2 * n);
+                        for (ap = 0; ap < 2; ap++) {
+                            fit_both(&p, (uint32_t)(2 * n), ap, &a, &b);
+                            n_full++;
+                            n_full_order += a == MDR_E_ORDER;
+                            /* the approach's jump-in (its "pull-off" read backwards)
+                             * may be too small for the sampling or hide in the noise:
+                             * MDR_E_NOPULLOFF first */
+                            if (!(a == MDR_E_ORDER || a == MDR_E_NOPULLOFF) ||
+                                !(b == MDR_E_ORDER || b == MDR_E_NOPULLOFF)) {
+                                fail_msg("reversed curve, regime %d, E* x %g, w_adv/w %g, n %d, noise %g, approach "
+                                         "%d: status %d, %d",
+                                         k, Ef[ie], wa[ia], n, sigs[is], ap, a, b);
+                            }
+                        }
+                    }
+                    /* the approach alone, reversed, noise-free */
+                    rev_curve(&p, wa[ia] * p.w, n, n, 0.0, zs, Fs);
+                    reverse(zs, n);
+                    reverse(Fs, n);
+                    fit_both(&p, (uint32_t)n, 0, &a, &b);
+                    n_app++;
+                    n_app_order += a == MDR_E_ORDER;
+                    /* f32 where its z does not resolve the step (256 eps |z|, 2 um
+                     * offset: the DMT contacts) is not tested for the fold's shape */
+                    if (a == MDR_OK || (b == MDR_OK && 256 * 5.96e-8 * fabs(zs[0]) < (zs[0] - zs[n - 1]) / (n - 1))) {
+                        fail_msg("reversed approach, regime %d, E* x %g, w_adv/w %g, n %d: status %d, %d", k,
+                                 Ef[ie], wa[ia], n, a, b);
+                    }
+                    /* z rising to the end: the approach alone in time order, or
+                     * the retract reversed */
+                    rev_curve(&p, wa[ia] * p.w, n, n, 0.0, zs, Fs);
+                    fit_both(&p, (uint32_t)n, 0, &a, &b);
+                    assert_int_equal(a, MDR_E_ORDER);
+                    assert_int_equal(b, MDR_E_ORDER);
+                    reverse(zs + n, n);
+                    reverse(Fs + n, n);
+                    memmove(zs, zs + n, (size_t)n * sizeof *zs);
+                    memmove(Fs, Fs + n, (size_t)n * sizeof *Fs);
+                    fit_both(&p, (uint32_t)n, 0, &a, &b);
+                    assert_int_equal(a, MDR_E_ORDER);
+                    assert_int_equal(b, MDR_E_ORDER);
+                }
+            }
+        }
+    }
+    print_message("reversed: whole curves %d, %d MDR_E_ORDER (the others MDR_E_NOPULLOFF); "
+                  "approaches %d, %d MDR_E_ORDER in f64 (the others MDR_E_MISFIT, MDR_E_NOPULLOFF)\n",
+                  n_full, n_full_order, n_app, n_app_order);
+    noise_state = seed;
+}
+
 /* opts.unpinned: no pinned top is looked for, every retract sample is
  * fitted (n_pinned = 0). The adversarial tester's curve (JKR, E* =
  * 1.633 MPa, w = 0.476, R = 90 nm, k_m = 8.96 N/m, 201 retract samples,
@@ -1603,6 +1770,7 @@ int main(void)
         cmocka_unit_test(test_refuse_units),
         cmocka_unit_test(test_refuse_runaway),
         cmocka_unit_test(test_unpinned),
+        cmocka_unit_test(test_reversed),
         cmocka_unit_test(test_fit_sweep),
         cmocka_unit_test(test_cover_fold),
         cmocka_unit_test(test_refuse_valley),

@@ -142,8 +142,16 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  *   UINT32_MAX/2);
  *   curves the fit cannot read: MDR_E_FEW (fewer than MDR_FIT_MIN_POINTS
  *   retract points, or fewer than MDR_FIT_MIN_CONTACT in contact),
- *   MDR_E_ORDER (z not monotonic within the retract, or within the approach
- *   when it is fitted), MDR_E_NOCONTACT (no retract force above the baseline
+ *   MDR_E_ORDER (the samples not in time order: z not monotonic within
+ *   the retract, or within the approach when it is fitted; z rising to the
+ *   last sample, no retract: an approach alone, or a retract reversed; the
+ *   retract's last contact sample a sampling step or more above where the
+ *   approach first left the baseline, though the fold lies below first
+ *   touch: the curve reversed; the full fit only: the retract's adhesive
+ *   end, the contact samples at or below the baseline, not met within its
+ *   noise by the model's square-root approach to the fold: its pull-off no
+ *   fold, as an approach read backwards ends; docs/fitting.md),
+ *   MDR_E_NOCONTACT (no retract force above the baseline
  *   by more than the noise), MDR_E_NOPULLOFF (the curve never separates: no
  *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);
  *   fits that fail: MDR_E_FITCAP (iteration cap, or a pinned top's end not

@@ -23,7 +23,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_SIZE: return "number of springs out of range";
     case MDR_E_DISABLED: return "removed from this build (mdr_options.h)";
     case MDR_E_FEW: return "too few points in the retract or in contact";
-    case MDR_E_ORDER: return "z not monotonic within the retract (or approach)";
+    case MDR_E_ORDER: return "samples not in time order: z not monotonic within the retract (or approach), rising to the end, or the pull-off above the approach's first touch or no fold (a curve read backwards)";
     case MDR_E_NOCONTACT: return "no contact in the curve";
     case MDR_E_NOPULLOFF: return "the curve never separates (no pull-off jump to the baseline)";
     case MDR_E_FITCAP: return "fit iteration cap reached";
