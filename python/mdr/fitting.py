@@ -107,7 +107,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     Returns a FitResult. A curve or an argument the library refuses raises
     mdr.Error with its status: MDR_E_FEW (too few points), MDR_E_NOCONTACT,
     MDR_E_NOPULLOFF (never separates), MDR_E_ORDER (z increases within the
-    retract), MDR_E_NONFINITE (a NaN or inf sample, .index its position),
+    retract, or the curve is in reversed time order), MDR_E_NONFINITE (a NaN or inf sample, .index its position),
     MDR_E_PARAM (k_machine, z_e, E0/w0), MDR_E_KIND (flat punch),
     MDR_E_FITCAP, MDR_E_DEGENERATE (the data do not determine E* or w:
     a relative standard error of 1 or more), MDR_E_MISFIT (the fitted model
@@ -179,5 +179,7 @@ def _fit_error(st, z, F, i, method, arith):
         lib.MDR_E_NOCONTACT: "no retract force above the baseline by more than the noise",
         lib.MDR_E_NOPULLOFF: "no pull-off jump followed by free points (the curve must end separated)",
         lib.MDR_E_KIND: "the flat punch cannot be fitted (its pull-off is Kendall's closed form)",
+        lib.MDR_E_ORDER: "the samples are not in time order: z rises to the end (no retract), or the "
+        "pull-off lies above the approach's first touch or is no fold (a curve read backwards)",
     }
     return Error(st, where, hint=hints.get(st, ""))
