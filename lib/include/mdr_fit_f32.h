@@ -165,10 +165,7 @@ void mdr_fit_defaults_f32(mdr_fit_opts_f32 *o, float k_m);
  *   last sample, no retract: an approach alone, or a retract reversed; the
  *   retract's last contact sample a sampling step or more above where the
  *   approach first left the baseline, though the fold lies below first
- *   touch: the curve reversed; the full fit only: the retract's adhesive
- *   end, the contact samples at or below the baseline, not met within its
- *   noise by the model's square-root approach to the fold: its pull-off no
- *   fold, as an approach read backwards ends; docs/fitting.md),
+ *   touch: the curve reversed; docs/fitting.md),
  *   MDR_E_NOCONTACT (no retract force above the baseline
  *   by more than the noise), MDR_E_NOPULLOFF (the curve never separates: no
  *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);
@@ -183,7 +180,11 @@ void mdr_fit_defaults_f32(mdr_fit_opts_f32 *o, float k_m);
  *   above 0.5), MDR_E_MISFIT (the full fit only: the
  *   fitted model does not reproduce the curve, its rms residual beyond
  *   MDR_FIT_NOISE_SIGMAS noise widths plus MDR_FIT_MISFIT_REL of the
- *   force scale), MDR_E_JUMPS (the retract jumps before the pull-off),
+ *   force scale; or the retract's adhesive end, its contact samples at or
+ *   below the baseline, not met within its noise by the model's square-root
+ *   approach to the fold: a pull-off that is no fold, as the end of an
+ *   approach passed in reversed time order; docs/fitting.md),
+ *   MDR_E_JUMPS (the retract jumps before the pull-off),
  *   MDR_E_PINNED (the full fit only: the retract straight to its pull-off
  *   and a line explains it better than the receding branch: a contact
  *   pinned until it ruptures; or, in noisy data, straight within its noise

@@ -23,14 +23,14 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_SIZE: return "number of springs out of range";
     case MDR_E_DISABLED: return "removed from this build (mdr_options.h)";
     case MDR_E_FEW: return "too few points in the retract or in contact";
-    case MDR_E_ORDER: return "samples not in time order: z not monotonic within the retract (or approach), rising to the end, or the pull-off above the approach's first touch or no fold (a curve read backwards)";
+    case MDR_E_ORDER: return "samples not in time order: z not monotonic within the retract (or approach), rising to the end, or the pull-off above the approach's first touch (a curve read backwards)";
     case MDR_E_NOCONTACT: return "no contact in the curve";
     case MDR_E_NOPULLOFF: return "the curve never separates (no pull-off jump to the baseline)";
     case MDR_E_FITCAP: return "fit iteration cap reached";
     case MDR_E_DEGENERATE: return "the data do not determine the parameters";
     case MDR_E_JUMPS: return "the retract jumps before the pull-off (one-branch model does not apply)";
     case MDR_E_PINNED: return "the retract is straight to its pull-off: pinned to its rupture, or a pinned top its noise may hide (fit with the approach, or state unpinned)";
-    case MDR_E_MISFIT: return "the fitted model does not reproduce the curve (residuals beyond its noise): a poor first guess, units not SI, or a curve the model does not describe";
+    case MDR_E_MISFIT: return "the fitted model does not reproduce the curve (residuals beyond its noise, overall or at the pull-off): a poor first guess, units not SI, or a curve the model does not describe (a pull-off that is no fold: an approach read backwards)";
     default: return "unknown status";
     }
 }

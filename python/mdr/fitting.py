@@ -111,7 +111,9 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     MDR_E_PARAM (k_machine, z_e, E0/w0), MDR_E_KIND (flat punch),
     MDR_E_FITCAP, MDR_E_DEGENERATE (the data do not determine E* or w:
     a relative standard error of 1 or more), MDR_E_MISFIT (the fitted model
-    does not reproduce the curve: a poor E0/w0, z not in metres), MDR_E_NOCONV,
+    does not reproduce the curve: a poor E0/w0, z not in metres; or its
+    pull-off is no fold, as an approach passed in reversed time order
+    ends), MDR_E_NOCONV,
     MDR_E_JUMPS, MDR_E_PINNED (a retract
     straight to its pull-off: pinned until it ruptures, or, in noisy data
     without unpinned=True, a pinned top the noise hides), MDR_E_RADIUS, ...
@@ -180,6 +182,6 @@ def _fit_error(st, z, F, i, method, arith):
         lib.MDR_E_NOPULLOFF: "no pull-off jump followed by free points (the curve must end separated)",
         lib.MDR_E_KIND: "the flat punch cannot be fitted (its pull-off is Kendall's closed form)",
         lib.MDR_E_ORDER: "the samples are not in time order: z rises to the end (no retract), or the "
-        "pull-off lies above the approach's first touch or is no fold (a curve read backwards)",
+        "pull-off lies above the approach's first touch (a curve read backwards)",
     }
     return Error(st, where, hint=hints.get(st, ""))
