@@ -12,6 +12,10 @@
 #                   run by make bench
 #   make fit-plot   the documentation's plot of a fitted curve over its data
 #                   (docs/fit_curve.png, gnuplot)
+#   make test-fit-known  the fit's known, open defects (test_fit built with
+#                   -DMDR_FIT_KNOWN_DEFECTS: the tests that fail until they
+#                   are fixed; not in make test, and it exits 1 while one
+#                   fails; docs/fitting.md lists them)
 
 TESTS += test_fit
 SAN_TESTS += test_fit
@@ -27,7 +31,11 @@ san-tests: $(B)/san/test_fit
 $(B)/host/mdr: examples/mdr_fit_cli.h examples/mdr_fit_cli_t.h
 $(B)/host/mdr: private override CFLAGS += -pthread
 
-.PHONY: fit-cli bench-fit fit-plot
+.PHONY: fit-cli bench-fit fit-plot test-fit-known
+test-fit-known: $(B)/host/libmdr.a
+	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) -DMDR_FIT_KNOWN_DEFECTS host_tests/test_fit.c $(B)/host/libmdr.a -lcmocka -lm \
+	  -o $(B)/host/test_fit_known
+	MDR_FIT_TESTS='$(or $(TESTS_KNOWN),test_f32_pinned_offset)' ./$(B)/host/test_fit_known
 fit-cli: $(B)/host/mdr
 	@echo "== fit cli"; bash host_tests/test_fit_cli.sh $(B)/host/mdr
 

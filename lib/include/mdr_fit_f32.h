@@ -163,9 +163,10 @@ void mdr_fit_defaults_f32(mdr_fit_opts_f32 *o, float k_m);
  *   MDR_E_ORDER (the samples not in time order: z not monotonic within
  *   the retract, or within the approach when it is fitted; z rising to the
  *   last sample, no retract: an approach alone, or a retract reversed; the
- *   retract's last contact sample a sampling step or more above where the
- *   approach first left the baseline, though the fold lies below first
- *   touch: the curve reversed; docs/fitting.md),
+ *   approach in contact (a force off the baseline by 6 noise widths and a
+ *   tenth of the pull-off force) a sampling step or more below the
+ *   retract's last contact sample, though the fold lies below first touch:
+ *   the curve reversed; docs/fitting.md),
  *   MDR_E_NOCONTACT (no retract force above the baseline
  *   by more than the noise), MDR_E_NOPULLOFF (the curve never separates: no
  *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);

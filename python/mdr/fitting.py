@@ -182,6 +182,6 @@ def _fit_error(st, z, F, i, method, arith):
         lib.MDR_E_NOPULLOFF: "no pull-off jump followed by free points (the curve must end separated)",
         lib.MDR_E_KIND: "the flat punch cannot be fitted (its pull-off is Kendall's closed form)",
         lib.MDR_E_ORDER: "the samples are not in time order: z rises to the end (no retract), or the "
-        "pull-off lies above the approach's first touch (a curve read backwards)",
+        "approach is in contact a step below the retract's pull-off (a curve read backwards)",
     }
     return Error(st, where, hint=hints.get(st, ""))
