@@ -86,12 +86,16 @@
  *   time order (test_order_*, test_reversed_baseline_step): status only,
  *     no tolerance: a curve in time order (the library's forward model,
  *     w_adv = w) never MDR_E_ORDER with its approach's baseline ORDER_STEP
- *     = 5 noise widths (ORDER_SIG = 0.1 % of the pull-off force) above the
- *     retract's (NORDER seeds of NORDER_PTS + NORDER_PTS samples), with a
- *     two-sample glitch (10 % of the pull-off force) on its approach's
- *     free part (noise-free, each regime), or with AR(1) noise (ORDER_RHO
- *     = 0.9, 1 %), or with white noise alone and its retract ending 3 to
- *     ORDER_TAIL_MAX = 8 samples after the pull-off; the whole curve
+ *     = 5 or ORDER_STEP_BIG = 30 noise widths (ORDER_SIG = 0.1 % of the
+ *     pull-off force; 30: drag, drift) above the retract's (NORDER seeds
+ *     of NORDER_PTS + NORDER_PTS samples), with a two-sample glitch (10 %
+ *     of the pull-off force) on its approach's free part (noise-free, each
+ *     regime), or with AR(1) noise (ORDER_RHO = 0.9, 1 %), or with white
+ *     noise alone and its retract ending 3 to ORDER_TAIL_MAX = 8 samples
+ *     after the pull-off, or coarse (8 to 40 samples a branch, the three
+ *     regimes, E* x 0.3, 1, 3, w_adv/w = 1, 0.5, 0.25, noise-free or
+ *     ORDER_SIG with the retract ending 3, 4 or 6 samples after its
+ *     pull-off; test_order_coarse); the whole curve
  *     reversed, its approach's baseline ORDER_DRAG = 1 % of the pull-off
  *     force above the retract's (noise ORDER_SIG), never MDR_OK (f64 and
  *     f32, with and without opts.approach);
@@ -150,6 +154,7 @@ MDR_TEST_NOT_APPLICABLE("the fit, f32, f64 and every profile")
 /* time order (test_order_*, test_reversed_baseline_step) */
 #define ORDER_SIG 1e-3  /* noise, of the pull-off force */
 #define ORDER_STEP 5.0  /* approach's baseline above the retract's, noise widths (below MDR_FIT_NOISE_SIGMAS) */
+#define ORDER_STEP_BIG 30.0 /* the same, far above them: 3 % of the pull-off force (drag, drift) */
 #define ORDER_DRAG 1e-2 /* the same for the reversed curves, of the pull-off force (10 noise widths) */
 #define ORDER_RHO 0.9   /* correlation of successive noise samples */
 #define ORDER_TAIL_MAX 8 /* free samples after the pull-off, 3 (MDR_FIT_MIN_FREE) .. this */
@@ -1545,39 +1550,44 @@ static double order_curve(const jkr_par *p, int n, double step, double sig_rel, 
  * 1.66 errors of the truth; the 20 retracts alone all answered. */
 static void test_order_baseline_step(void **state)
 {
+    static const double steps[2] = {ORDER_STEP, ORDER_STEP_BIG};
     const jkr_par *p = &regimes[1];
     const uint64_t saved = noise_state;
     mdr_contact_f64 c = paraboloid64(p->R);
-    int s, n_order = 0, n_ok = 0, n_ret = 0;
-    double worst_err = 0.0;
+    int s, l;
     (void)state;
     noise_state = 0x9e3779b97f4a7c15ull; /* its own noise, whatever ran before */
-    for (s = 0; s < NORDER; s++) {
-        mdr_status a, b;
-        mdr_fit_opts_f64 o;
-        mdr_fit_result_f64 r;
-        order_curve(p, NORDER_PTS, ORDER_STEP * ORDER_SIG, ORDER_SIG, 0.0, zs, Fs);
-        fit_both(p, 2u * NORDER_PTS, 0, &a, &b);
-        n_order += a == MDR_E_ORDER || b == MDR_E_ORDER;
-        mdr_fit_defaults_f64(&o, p->km);
-        if (mdr_fit_curve_f64(&c, &o, zs, Fs, 2u * NORDER_PTS, work64, 2 * NMAX, &r) == MDR_OK) {
-            double e1 = nerr(r.E, p->E, r.E_err), e2 = nerr(r.w, p->w, r.w_err);
-            n_ok++;
-            worst_err = e1 > worst_err ? e1 : worst_err;
-            worst_err = e2 > worst_err ? e2 : worst_err;
+    for (l = 0; l < 2; l++) {
+        int n_order = 0, n_ok = 0, n_ret = 0;
+        double worst_err = 0.0;
+        for (s = 0; s < NORDER; s++) {
+            mdr_status a, b;
+            mdr_fit_opts_f64 o;
+            mdr_fit_result_f64 r;
+            order_curve(p, NORDER_PTS, steps[l] * ORDER_SIG, ORDER_SIG, 0.0, zs, Fs);
+            fit_both(p, 2u * NORDER_PTS, 0, &a, &b);
+            n_order += a == MDR_E_ORDER || b == MDR_E_ORDER;
+            mdr_fit_defaults_f64(&o, p->km);
+            if (mdr_fit_curve_f64(&c, &o, zs, Fs, 2u * NORDER_PTS, work64, 2 * NMAX, &r) == MDR_OK) {
+                double e1 = nerr(r.E, p->E, r.E_err), e2 = nerr(r.w, p->w, r.w_err);
+                n_ok++;
+                worst_err = e1 > worst_err ? e1 : worst_err;
+                worst_err = e2 > worst_err ? e2 : worst_err;
+            }
+            n_ret += mdr_fit_curve_f64(&c, &o, zs + NORDER_PTS, Fs + NORDER_PTS, NORDER_PTS, work64, 2 * NMAX,
+                                       &r) == MDR_OK;
         }
-        n_ret += mdr_fit_curve_f64(&c, &o, zs + NORDER_PTS, Fs + NORDER_PTS, NORDER_PTS, work64, 2 * NMAX, &r) ==
-                 MDR_OK;
+        print_message("baseline step %.0f noise widths: %d of %d curves in time order MDR_E_ORDER; %d answered "
+                      "(f64), within %.2f errors; their retracts alone %d answered\n",
+                      steps[l], n_order, NORDER, n_ok, worst_err, n_ret);
+        if (n_order) {
+            noise_state = saved;
+            fail_msg("%d of %d genuine curves (in time order, approach baseline %.0f noise widths above the "
+                     "retract's) refused with MDR_E_ORDER",
+                     n_order, NORDER, steps[l]);
+        }
     }
     noise_state = saved;
-    print_message("baseline step %.0f noise widths: %d of %d curves in time order MDR_E_ORDER; %d answered (f64), "
-                  "within %.2f errors; their retracts alone %d answered\n",
-                  ORDER_STEP, n_order, NORDER, n_ok, worst_err, n_ret);
-    if (n_order) {
-        fail_msg("%d of %d genuine curves (in time order, approach baseline %.0f noise widths above the "
-                 "retract's) refused with MDR_E_ORDER",
-                 n_order, NORDER, ORDER_STEP);
-    }
 }
 
 /* A glitch recorded over two samples (a spike through the deflection
@@ -1647,6 +1657,82 @@ static void test_order_correlated_noise(void **state)
         fail_msg("%d of %d genuine curves (in time order, AR(1) noise rho %.1f) refused with MDR_E_ORDER", n_order,
                  NORDER, ORDER_RHO);
     }
+}
+
+/* Coarse sampling: a step as large as the fold's distance below first
+ * touch. In time order the approach is free a step below the retract's
+ * last contact sample, but not necessarily a step above it (its jump-in
+ * may lie within that step): genuine curves of 8 to 40 samples a branch
+ * (the three regimes, E* x 0.3, 1, 3, w_adv/w = 1, 0.5, 0.25, noise-free or
+ * ORDER_SIG with the retract ending 3, 4 or 6 samples after its
+ * pull-off, f64 and f32) are never MDR_E_ORDER. Measured: none of 1 352
+ * fits. The check before this test compared the approach's force with
+ * the noise as 3 free samples gave it (0.09 of the truth): a curve of 12
+ * samples a branch whose last contact sample is noise (regime 1, E* x
+ * 0.3, w_adv = w/2; the last case, its noise as drawn then) was told
+ * MDR_E_ORDER. */
+static void test_order_coarse(void **state)
+{
+    static const int sizes[5] = {8, 12, 16, 24, 40}, tails[3] = {3, 4, 6};
+    static const double Es[3] = {0.3, 1.0, 3.0}, ratios[3] = {1.0, 0.5, 0.25};
+    const uint64_t saved = noise_state;
+    int r, e, k, s, t, i, n_order = 0, n_all = 0, n_ok = 0;
+    (void)state;
+    noise_state = 0xbb67ae8584caa73bull;
+    for (r = 0; r < 3; r++) {
+        for (e = 0; e < 3; e++) {
+            for (k = 0; k < 3; k++) {
+                for (s = 0; s < 5; s++) {
+                    for (t = -2; t < 3; t++) { /* noise-free; noisy; noisy, the retract ending tails[t] after
+                                                * its pull-off */
+                        jkr_par p = regimes[r];
+                        mdr_status a, b;
+                        int last, n = 2 * sizes[s];
+                        double Fpo = 0.0;
+                        p.E *= Es[e];
+                        (void)rev_curve(&p, ratios[k] * p.w, sizes[s], sizes[s], t == -1 ? ORDER_SIG : 0.0, zs, Fs);
+                        if (t >= 0) {
+                            for (last = n - 1; last > 0 && Fs[last] == 0.0; last--) {
+                            }
+                            n = last + 1 + tails[t] < n ? last + 1 + tails[t] : n;
+                            for (i = 0; i <= last; i++) {
+                                Fpo = Fs[i] < Fpo ? Fs[i] : Fpo;
+                            }
+                            for (i = 0; i < n; i++) {
+                                Fs[i] += ORDER_SIG * fabs(Fpo) * gauss();
+                            }
+                        }
+                        fit_both(&p, (uint32_t)n, 0, &a, &b);
+                        n_all += 2;
+                        n_ok += (a == MDR_OK) + (b == MDR_OK);
+                        if (a == MDR_E_ORDER || b == MDR_E_ORDER) {
+                            n_order += (a == MDR_E_ORDER) + (b == MDR_E_ORDER);
+                            print_message("  MDR_E_ORDER: regime %d, E* x %g, w_adv/w %g, %d samples a branch, "
+                                          "tail %d (0: noise-free, 1: noisy, full tail) (f64 %d, f32 %d)\n",
+                                          r, Es[e], ratios[k], sizes[s], t < 0 ? -1 - t : tails[t], a, b);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    {
+        /* the curve that was told MDR_E_ORDER (noise state as it was
+         * drawn then): its last contact sample is noise, 3 free samples */
+        jkr_par p = regimes[1];
+        mdr_status a, b;
+        p.E *= 0.3;
+        noise_state = 0x20f221d61efea1f4ull;
+        (void)rev_curve(&p, 0.5 * p.w, 12, 12, ORDER_SIG, zs, Fs);
+        fit_both(&p, 24u, 0, &a, &b);
+        n_all += 2;
+        n_ok += (a == MDR_OK) + (b == MDR_OK);
+        n_order += (a == MDR_E_ORDER) + (b == MDR_E_ORDER);
+    }
+    noise_state = saved;
+    print_message("coarse sampling (8 to 40 samples a branch): %d of %d fits of curves in time order MDR_E_ORDER, "
+                  "%d ok\n", n_order, n_all, n_ok);
+    assert_int_equal(n_order, 0);
 }
 
 /* White noise alone, a retract cut short after its pull-off (its last
@@ -2129,6 +2215,7 @@ int main(void)
         cmocka_unit_test(test_order_glitch),
         cmocka_unit_test(test_order_correlated_noise),
         cmocka_unit_test(test_order_short_tail),
+        cmocka_unit_test(test_order_coarse),
         cmocka_unit_test(test_reversed_baseline_step),
 #ifdef MDR_FIT_KNOWN_DEFECTS
         cmocka_unit_test(test_f32_pinned_offset),
