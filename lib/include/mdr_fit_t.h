@@ -160,13 +160,16 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  *   by 3 errors within a factor 20 either way; or the two-point
  *   equations have no solution, for MDR_FIT_TWO_POINT also not 3 noise
  *   errors from its measurements, or its noise alone gives ln E* an error
- *   above 0.5), MDR_E_MISFIT (the full fit only: the
+ *   above 0.5), MDR_E_MISFIT (the full fit: the
  *   fitted model does not reproduce the curve, its rms residual beyond
  *   MDR_FIT_NOISE_SIGMAS noise widths plus MDR_FIT_MISFIT_REL of the
  *   force scale; or the retract's adhesive end, its contact samples at or
  *   below the baseline, not met within its noise by the model's square-root
  *   approach to the fold: a pull-off that is no fold, as the end of an
- *   approach passed in reversed time order; docs/fitting.md),
+ *   approach passed in reversed time order; either method: the approach
+ *   leaving the baseline a sampling step or more below the retract's last
+ *   contact sample, where the model holds it free: drift, a glitch,
+ *   correlated noise, or a curve reversed; docs/fitting.md),
  *   MDR_E_JUMPS (the retract jumps before the pull-off),
  *   MDR_E_PINNED (the full fit only: the retract straight to its pull-off
  *   and a line explains it better than the receding branch: a contact
