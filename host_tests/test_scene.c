@@ -15,8 +15,10 @@
  *   TOL_32 = 1e-5 (the accuracy goal): scene f32 against scene f64, same
  *     cycles (measured 6.4e-6, the cone through a machine);
  *   the same two for an AFM tip through soft cantilevers, in fine and
- *     coarse ticks (scene_soft_machine; measured 1.3e-15 and 4.4e-7 on the
- *     host, 4.6e-7 with the M4F's fused multiply-adds);
+ *     coarse ticks (scene_soft_machine; measured 1.0e-15 and 1.8e-7 on the
+ *     host and with the M4F's fused multiply-adds; 4.4e-7 and 4.6e-7 before
+ *     a move's d and F through the machine came from the last evaluation's
+ *     parts of U, mdr_mono_float.inc);
  *   TOL_JKR = 2e-15 (f64): pull-off force under fixed load -1.5 pi w R and
  *     under fixed grips -5/6 pi w R (seed 4.36, 4.38), relative (measured
  *     3.4e-16);
