@@ -85,6 +85,9 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, the spring engine, scenes with events, every 
 
 #define TOL_ENG64 5e-14
 #define TOL_32 1e-5
+#define TOL_FOLD 2.0  /* scene_machine_sweep: near the pull-off, times eps sqrt(|z_po|/|z - z_po|) */
+#define TOL_Z_ULP 8.0 /* scene_machine_sweep: z - (d + F/k_m), eps of the parts' scale */
+#define TOL_EV 1e-6   /* scene_machine_sweep: an event may differ within this of z_po */
 #define TOL_JKR 2e-15
 #define TOL_EN 1e-12
 #define TICKS 4000
@@ -527,6 +530,257 @@ static void scene_z_range(void **state)
     k = s;
     assert_int_equal(mdr_scene_step_F_f32(&s, 1e30f, &o), MDR_E_OVERFLOW); /* z = 1e42 m */
     assert_memory_equal(&s, &k, sizeof s);
+}
+
+/* ------------------------------------------------ scene_machine_sweep */
+
+/* The f32 scene against the f64 scene through a machine (step_z) over
+ * whole ranges (the header's TOL_32, TOL_FOLD, TOL_Z_ULP, TOL_EV): a
+ * tick's z = d + F/k_m, its control's rounding scale, the pull-off's
+ * control z_po (the f64 scene's retraction fold) */
+#ifdef MDR_TARGET_TEST
+#define SW_NN 3
+#define SW_NW 2
+#define SW_NK 5
+#define SW_WALK 400
+#define SW_TOP 1000
+#else
+#define SW_NN 6
+#define SW_NW 4
+#define SW_NK 9
+#define SW_WALK 4000
+#define SW_TOP 100000
+#endif
+
+typedef struct {
+    double zmax, zmin, zpo;
+    int kind, n; /* kind 0: 3 triangle cycles of n ticks; 1: a random walk;
+                    2: in and down to z_po (1 + del) and up; 3: touches */
+    double del;
+} sw_path;
+
+typedef struct {
+    double eF, ed, eFf, edf, ez32, ez64, dF, ddd;
+    int forks, ticks;
+} sw_res;
+
+/* z at tick i of path p (i < sw_len(p)); the walk: xorshift from the
+ * seed in *r, steps log-uniform from 1e-6 to 1 of the range, reflected */
+static int sw_len(const sw_path *p)
+{
+    return p->kind == 0 ? (p->n == SW_TOP ? p->n : 3 * p->n) : p->kind == 1 ? SW_WALK : p->kind == 2 ? 60 : 8;
+}
+
+static double sw_z(const sw_path *p, int i, uint64_t *r, double *zc)
+{
+    if (p->kind == 0) {
+        const double f = (double)(i % p->n + 1) / p->n;
+        return f < 0.25 ? p->zmax * f * 4 : f < 0.75 ? p->zmax + (p->zmin - p->zmax) * (f - 0.25) * 2
+                                                     : p->zmin * (1 - (f - 0.75) * 4);
+    }
+    if (p->kind == 1) {
+        double u, v, st;
+        *r ^= *r << 13, *r ^= *r >> 7, *r ^= *r << 17;
+        u = (double)(*r >> 11) / 9007199254740992.0;
+        *r ^= *r << 13, *r ^= *r >> 7, *r ^= *r << 17;
+        v = (double)(*r >> 11) / 9007199254740992.0;
+        st = (p->zmax - p->zmin) * pow(10.0, -6 * u) * (v < 0.5 ? -1 : 1);
+        *zc += st;
+        *zc = *zc > p->zmax ? 2 * p->zmax - *zc : *zc < p->zmin ? 2 * p->zmin - *zc : *zc;
+        return *zc;
+    }
+    if (p->kind == 2) {
+        const double zs = p->zpo + p->del * fabs(p->zpo);
+        return i < 20 ? p->zmax * (i + 1) / 20 : i < 40 ? p->zmax + (zs - p->zmax) * (i - 19) / 20
+                                                        : zs + (p->zmax - zs) * (i - 39) / 20;
+    }
+    { /* touches: just above 0 (the jump-in or contact), then back */
+        static const double t[8] = {1e-20, 0, 1e-7, -1e-7, 1e-3, 0, 1, -1e-20};
+        return i == 6 ? p->zmax : t[i] * p->zmax;
+    }
+}
+
+/* one path from a fresh pair of scenes (f64: first alone, for max|F| and
+ * max|d|); worst errors into *w */
+static void sw_run(const mdr_contact_f64 *c, const mdr_contact_f32 *c32, double w_adv, double k_m,
+                   const sw_path *p, sw_res *w, const char *what)
+{
+    const int m = sw_len(p);
+    const float kf = (float)k_m;
+    double mF = 0, md = 0, zc = 0, zpe = HUGE_VAL;
+    uint64_t r = 88172645463325252ull;
+    mdr_scene_f64 s;
+    mdr_scene_f32 s32;
+    int i, forked = 0;
+    assert_int_equal(mdr_scene_init_contact_f64(&s, c, w_adv, k_m, MDR_OUT_ALL, NULL), MDR_OK);
+    for (i = 0; i < m; i++) {
+        mdr_step_f64 o;
+        assert_int_equal(mdr_scene_step_z_f64(&s, sw_z(p, i, &r, &zc), &o), MDR_OK);
+        mF = fabs(o.F) > mF ? fabs(o.F) : mF;
+        md = fabs(o.d) > md ? fabs(o.d) : md;
+    }
+    assert_int_equal(mdr_scene_init_contact_f64(&s, c, w_adv, k_m, MDR_OUT_ALL, NULL), MDR_OK);
+    assert_int_equal(mdr_scene_init_contact_f32(&s32, c32, (float)w_adv, kf, MDR_OUT_ALL, NULL), MDR_OK);
+    r = 88172645463325252ull;
+    zc = 0;
+    for (i = 0; i < m; i++) {
+        const double z = sw_z(p, i, &r, &zc), zp = fabs(z - p->zpo), t0 = s.tau;
+        const float zf = (float)z, t32 = s32.tau;
+        mdr_step_f64 o;
+        mdr_step_f32 o32;
+        double e, fold;
+        assert_int_equal(mdr_scene_step_z_f64(&s, z, &o), MDR_OK);
+        assert_int_equal(mdr_scene_step_z_f32(&s32, zf, &o32), MDR_OK);
+        /* the pull-off's condition: near it a rounding of the control
+         * moves the edge by eps sqrt(|z_po| / |z - z_po|) relative (up to
+         * sqrt(eps) at z_po), at the control that last moved both edges
+         * (a pinned edge keeps its error) */
+        zpe = s.tau != t0 && s32.tau != t32 ? zp : zpe;
+        fold = TOL_FOLD * FLT_EPSILON *
+               sqrt(fabs(p->zpo) / (zpe > FLT_EPSILON * fabs(p->zpo) ? zpe : FLT_EPSILON * fabs(p->zpo)));
+        if (!isfinite(o32.F) || !isfinite(o32.d) || !isfinite(o32.z)) {
+            fail_msg("%s, path %d/%d tick %d z %.9g: f32 d %g F %g", what, p->kind, p->n, i, z, (double)o32.d,
+                     (double)o32.F);
+        }
+        if (s.contact) { /* the f64 scene's z against its control */
+            const double g = s.Ds * pow(o.a / s.as, s.n),
+                         sc = fabs(o.d) + fabs(z) + g + 2 * E * o.a * (fabs(o.d) + g) / k_m;
+            e = fabs(o.d + o.F / k_m - z) / (DBL_EPSILON * sc);
+            w->ez64 = e > w->ez64 ? e : w->ez64;
+        }
+        if (forked) {
+            continue;
+        }
+        if (o.event != o32.event || s.contact != s32.contact) {
+            /* a crossing of the pull-off within rounding, after which
+             * the two go their own ways: the path's comparison ends */
+            if (!(zp <= TOL_EV * fabs(p->zpo))) {
+                fail_msg("%s, path %d/%d (del %g) tick %d z %.9g (z_po %.9g): event f64 %s, f32 %s", what, p->kind,
+                         p->n, p->del, i, z, p->zpo, mdr_event_str(o.event), mdr_event_str(o32.event));
+            }
+            forked = 1;
+            w->forks++;
+            continue;
+        }
+        w->ticks++;
+        e = fabs((double)o32.F - o.F) / mF;
+        w->eF = e > w->eF ? e : w->eF;
+        if (fold < 0.1 * TOL_32) {
+            w->eFf = e > w->eFf ? e : w->eFf;
+        }
+        if (e > TOL_32 + fold) {
+            fail_msg("%s, path %d/%d (del %g) tick %d z %.9g (z_po %.9g): F f32 %.9g f64 %.9g, %.3g of max|F| "
+                     "(tolerance %.3g)",
+                     what, p->kind, p->n, p->del, i, z, p->zpo, (double)o32.F, o.F, e, TOL_32 + fold);
+        }
+        if (e > TOL_32) {
+            w->dF = (e - TOL_32) / fold > w->dF ? (e - TOL_32) / fold : w->dF;
+        }
+        e = fabs((double)o32.d - o.d) / md;
+        w->ed = e > w->ed ? e : w->ed;
+        if (fold < 0.1 * TOL_32) {
+            w->edf = e > w->edf ? e : w->edf;
+        }
+        if (e > TOL_32 + fold) {
+            fail_msg("%s, path %d/%d (del %g) tick %d z %.9g (z_po %.9g): d f32 %.9g f64 %.9g, %.3g of max|d| "
+                     "(tolerance %.3g)",
+                     what, p->kind, p->n, p->del, i, z, p->zpo, (double)o32.d, o.d, e, TOL_32 + fold);
+        }
+        if (e > TOL_32) {
+            w->ddd = (e - TOL_32) / fold > w->ddd ? (e - TOL_32) / fold : w->ddd;
+        }
+        if (s32.contact) { /* z = d + F/k_m against the f32 control */
+            const double a = (double)o32.a, g = (double)s32.Ds * pow(a / (double)s32.as, s32.n),
+                         sc = fabs((double)o32.d) + fabs((double)zf) + g +
+                              2 * E * a * (fabs((double)o32.d) + g) / (double)kf;
+            e = fabs((double)o32.d + (double)o32.F / (double)kf - (double)zf) / (FLT_EPSILON * sc);
+            w->ez32 = e > w->ez32 ? e : w->ez32;
+            if (e > TOL_Z_ULP) {
+                fail_msg("%s, path %d/%d tick %d z %.9g: f32 d + F/k_m = %.9g, %.1f eps of the parts' scale %.3g",
+                         what, p->kind, p->n, i, (double)zf, (double)o32.d + (double)o32.F / (double)kf, e, sc);
+            }
+        }
+    }
+}
+
+/* the sweep: g = C x^n, n = 1 (cone), 2 (paraboloid), 3, 4, 6, 8 (power
+ * law, f = r^n/L^(n-1)); w_adv/w 0, 1/4, 1/2, 1; k_m 1e4 ... 1e-4 times the
+ * contact's stiffness 2E* a_s (a_s: the scene's radius unit, near the
+ * pull-off radius), by decades; on each, from fresh scenes: 3 triangle
+ * cycles 0 -> 4|z_po| -> z_po - |z_po|/2 -> 0 in 1, 2, 3, 7, 40, 1000 ticks
+ * and one cycle in SW_TOP; a random walk of SW_WALK ticks, steps 1e-6 to 1
+ * of that range, reflected at its ends (many reversals); in, down to
+ * z_po (1 + del) and back up, del from 1e-1 to 1e-6 and -1e-7 to -1e-1
+ * (0 and +-1e-7: a crossing within rounding is allowed); touches just
+ * above 0 and back (MDR_TARGET_TEST: fewer of each) */
+static void scene_machine_sweep(void **state)
+{
+#ifdef MDR_TARGET_TEST
+    static const int ns[SW_NN] = {1, 2, 3};
+    static const double wfs[SW_NW] = {0, 1};
+    static const double krs[SW_NK] = {1e4, 1e2, 1, 1e-2, 1e-4};
+#else
+    static const int ns[SW_NN] = {1, 2, 3, 4, 6, 8};
+    static const double wfs[SW_NW] = {0, 0.25, 0.5, 1};
+    static const double krs[SW_NK] = {1e4, 1e3, 1e2, 1e1, 1, 1e-1, 1e-2, 1e-3, 1e-4};
+#endif
+    static const int tks[7] = {1, 2, 3, 7, 40, 1000, SW_TOP};
+    static const double dels[14] = {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 0, -1e-7, -1e-6, -1e-5, -1e-4, -1e-3, -1e-1};
+    sw_res w = {0};
+    int ni, wi, ki, j, paths = 0;
+    (void)state;
+    for (ni = 0; ni < SW_NN; ni++) {
+        const int n = ns[ni], kind = n == 1 ? MDR_PROFILE_CONE : n == 2 ? MDR_PROFILE_PARABOLOID : MDR_PROFILE_POWERLAW;
+        const double L = n >= 6 ? 1e-5 : 1e-6, p[3] = {n == 1 ? 0.3 : n == 2 ? L : pow(L, 1.0 - n), n, 0};
+        const float pf[3] = {(float)p[0], (float)p[1], 0};
+        mdr_contact_f64 c;
+        mdr_contact_f32 c32;
+        assert_int_equal(mdr_contact_init_f64(&c, (uint8_t)kind, p, E, W), MDR_OK);
+        assert_int_equal(mdr_contact_init_f32(&c32, (uint8_t)kind, pf, (float)E, (float)W), MDR_OK);
+        for (wi = 0; wi < SW_NW; wi++) {
+            for (ki = 0; ki < SW_NK; ki++) {
+                const double w_adv = wfs[wi] * W;
+                double k_m;
+                char what[96];
+                sw_path q;
+                mdr_scene_f64 s;
+                assert_int_equal(mdr_scene_init_contact_f64(&s, &c, w_adv, 1.0, MDR_OUT_ALL, NULL), MDR_OK);
+                k_m = krs[ki] * 2 * E * s.as;
+                assert_int_equal(mdr_scene_init_contact_f64(&s, &c, w_adv, k_m, MDR_OUT_ALL, NULL), MDR_OK);
+                q.zpo = s.uf[2] * s.Ds;
+                q.zmax = 4 * fabs(q.zpo);
+                q.zmin = q.zpo - 0.5 * fabs(q.zpo);
+                q.del = 0;
+                snprintf(what, sizeof what, "machine sweep n %d w_adv/w %g k_m/(2E* a_s) %g", n, wfs[wi], krs[ki]);
+                for (j = 0; j < 7; j++) {
+                    q.kind = 0;
+                    q.n = tks[j];
+                    sw_run(&c, &c32, w_adv, k_m, &q, &w, what);
+                }
+                q.kind = 1;
+                q.n = SW_WALK;
+                sw_run(&c, &c32, w_adv, k_m, &q, &w, what);
+                for (j = 0; j < 14; j++) {
+                    q.kind = 2;
+                    q.n = 0;
+                    q.del = dels[j];
+                    sw_run(&c, &c32, w_adv, k_m, &q, &w, what);
+                }
+                q.kind = 3;
+                q.del = 0;
+                sw_run(&c, &c32, w_adv, k_m, &q, &w, what);
+                paths += 23;
+            }
+        }
+    }
+    printf("  machine sweep, f32 - f64: %d paths, %d ticks compared, %d crossings of the pull-off within rounding; "
+           "F %.2e of max|F|, d %.2e of max|d| (away from the pull-off %.2e, %.2e; beyond TOL_32: %.2f, %.2f of "
+           "TOL_FOLD's term); z = d + F/k_m %.2f eps (f64 %.2f) of the parts' scale\n",
+           paths, w.ticks, w.forks, w.eF, w.ed, w.eFf, w.edf, w.dF, w.ddd, w.ez32, w.ez64);
+    err_le(w.eFf, TOL_32, "machine sweep: F f32 - f64 away from the pull-off");
+    err_le(w.edf, TOL_32, "machine sweep: d f32 - f64 away from the pull-off");
+    err_le(w.ez64, TOL_Z_ULP, "machine sweep: f64 z = d + F/k_m in eps of the parts' scale");
+    assert_true(w.forks <= 3 * paths / 23);
 }
 
 #if MDR_CFG_Q31
@@ -1139,6 +1393,7 @@ int main(void)
         cmocka_unit_test(scene_outputs),
         cmocka_unit_test(scene_errors),
         cmocka_unit_test(scene_z_range),
+        cmocka_unit_test(scene_machine_sweep),
 #if MDR_CFG_Q31
         cmocka_unit_test(scene_q31_vs_f64),
         cmocka_unit_test(scene_q31_any_step),
