@@ -19,6 +19,19 @@
  *     host and with the M4F's fused multiply-adds; 4.4e-7 and 4.6e-7 before
  *     a move's d and F through the machine came from the last evaluation's
  *     parts of U, mdr_mono_float.inc);
+ *   the same through a machine over whole ranges (scene_machine_sweep: n 1
+ *     to 8, w_adv/w 0 to 1, k_m 1e4 to 1e-4 times 2E* a_s, 1 to 1e5 ticks
+ *     per cycle, random walks, stops at and across the pull-off, touches):
+ *     F and d within TOL_32 of max|F|, max|d| away from the pull-off
+ *     (measured 1.7e-6 and 4.6e-7; 1.9e-6 and 4.3e-7 before d5a81a8),
+ *     and TOL_32 + TOL_FOLD eps sqrt(|z_po|/|z - z_po|) near it, z at the
+ *     control that last moved both edges (the fold's condition: measured
+ *     1.7e-4 and 2.9e-4 at z_po itself, 0.23 and 0.40 of the term, host;
+ *     0.45 for d on the M4F; the same before); z = d + F/k_m within
+ *     TOL_Z_ULP = 8 eps of the parts' scale |z| + |d| + g + 2E* a (|d| +
+ *     g)/k_m (measured 0.96, f64 1.11; 1.08 before); the same events
+ *     but a crossing of the pull-off within TOL_EV = 1e-6 of z_po
+ *     (measured: all within 1e-7);
  *   TOL_JKR = 2e-15 (f64): pull-off force under fixed load -1.5 pi w R and
  *     under fixed grips -5/6 pi w R (seed 4.36, 4.38), relative (measured
  *     3.4e-16);
