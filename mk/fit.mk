@@ -14,8 +14,10 @@
 #                   (docs/fit_curve.png, gnuplot)
 #   make test-fit-known  the fit's known, open defects (test_fit built with
 #                   -DMDR_FIT_KNOWN_DEFECTS: the tests that fail until they
-#                   are fixed; not in make test, and it exits 1 while one
-#                   fails; docs/fitting.md lists them)
+#                   are fixed, named in FIT_KNOWN_DEFECTS below or
+#                   TESTS_KNOWN=...; not in make test, and it exits 1 while
+#                   one fails; docs/fitting.md lists them). None at present:
+#                   it says so and exits 0
 
 TESTS += test_fit
 SAN_TESTS += test_fit
@@ -31,11 +33,18 @@ san-tests: $(B)/san/test_fit
 $(B)/host/mdr: examples/mdr_fit_cli.h examples/mdr_fit_cli_t.h
 $(B)/host/mdr: private override CFLAGS += -pthread
 
+# the tests of the known, open defects (cmocka's filter: names, * and ?);
+# test_f32_pinned_offset, the last, fixed and in make test since
+FIT_KNOWN_DEFECTS :=
 .PHONY: fit-cli bench-fit fit-plot test-fit-known
 test-fit-known: $(B)/host/libmdr.a
+ifeq ($(strip $(or $(TESTS_KNOWN),$(FIT_KNOWN_DEFECTS))),)
+	@echo "test-fit-known: no known, open defects of the fit (docs/fitting.md); TESTS_KNOWN=... runs named tests"
+else
 	$(HOSTCC) $(TEST_CFLAGS) $(CFLAGS) -DMDR_FIT_KNOWN_DEFECTS host_tests/test_fit.c $(B)/host/libmdr.a -lcmocka -lm \
 	  -o $(B)/host/test_fit_known
-	MDR_FIT_TESTS='$(or $(TESTS_KNOWN),test_f32_pinned_offset)' ./$(B)/host/test_fit_known
+	MDR_FIT_TESTS='$(or $(TESTS_KNOWN),$(FIT_KNOWN_DEFECTS))' ./$(B)/host/test_fit_known
+endif
 fit-cli: $(B)/host/mdr
 	@echo "== fit cli"; bash host_tests/test_fit_cli.sh $(B)/host/mdr
 
