@@ -577,6 +577,28 @@ typedef struct {
     int forks, ticks;
 } sw_res;
 
+/* one output v32 (f32) against v64 (f64) at tick i of path p, relative to
+ * the cycle's max|.| m: within TOL_32 plus the fold's allowance fold;
+ * the worst error (*worst; *far away from the pull-off) and the share of
+ * the allowance used (*share) */
+static void sw_part(const char *what, const sw_path *p, int i, double z, const char *name, double v32, double v64,
+                    double m, double fold, double *worst, double *far, double *share)
+{
+    const double e = fabs(v32 - v64) / m;
+    *worst = e > *worst ? e : *worst;
+    if (fold < 0.1 * TOL_32) {
+        *far = e > *far ? e : *far;
+    }
+    if (e > TOL_32 + fold) {
+        fail_msg("%s, path %d/%d (del %g) tick %d z %.9g (z_po %.9g): %s f32 %.9g f64 %.9g, %.3g of max|%s| "
+                 "(tolerance %.3g)",
+                 what, p->kind, p->n, p->del, i, z, p->zpo, name, v32, v64, e, name, TOL_32 + fold);
+    }
+    if (e > TOL_32) {
+        *share = (e - TOL_32) / fold > *share ? (e - TOL_32) / fold : *share;
+    }
+}
+
 /* z at tick i of path p (i < sw_len(p)); the walk: xorshift from the
  * seed in *r, steps log-uniform from 1e-6 to 1 of the range, reflected */
 static int sw_len(const sw_path *p)
@@ -676,32 +698,8 @@ static void sw_run(const mdr_contact_f64 *c, const mdr_contact_f32 *c32, double 
             continue;
         }
         w->ticks++;
-        e = fabs((double)o32.F - o.F) / mF;
-        w->eF = e > w->eF ? e : w->eF;
-        if (fold < 0.1 * TOL_32) {
-            w->eFf = e > w->eFf ? e : w->eFf;
-        }
-        if (e > TOL_32 + fold) {
-            fail_msg("%s, path %d/%d (del %g) tick %d z %.9g (z_po %.9g): F f32 %.9g f64 %.9g, %.3g of max|F| "
-                     "(tolerance %.3g)",
-                     what, p->kind, p->n, p->del, i, z, p->zpo, (double)o32.F, o.F, e, TOL_32 + fold);
-        }
-        if (e > TOL_32) {
-            w->dF = (e - TOL_32) / fold > w->dF ? (e - TOL_32) / fold : w->dF;
-        }
-        e = fabs((double)o32.d - o.d) / md;
-        w->ed = e > w->ed ? e : w->ed;
-        if (fold < 0.1 * TOL_32) {
-            w->edf = e > w->edf ? e : w->edf;
-        }
-        if (e > TOL_32 + fold) {
-            fail_msg("%s, path %d/%d (del %g) tick %d z %.9g (z_po %.9g): d f32 %.9g f64 %.9g, %.3g of max|d| "
-                     "(tolerance %.3g)",
-                     what, p->kind, p->n, p->del, i, z, p->zpo, (double)o32.d, o.d, e, TOL_32 + fold);
-        }
-        if (e > TOL_32) {
-            w->ddd = (e - TOL_32) / fold > w->ddd ? (e - TOL_32) / fold : w->ddd;
-        }
+        sw_part(what, p, i, z, "F", (double)o32.F, o.F, mF, fold, &w->eF, &w->eFf, &w->dF);
+        sw_part(what, p, i, z, "d", (double)o32.d, o.d, md, fold, &w->ed, &w->edf, &w->ddd);
         if (s32.contact) { /* z = d + F/k_m against the f32 control */
             const double a = (double)o32.a, g = (double)s32.Ds * pow(a / (double)s32.as, s32.n),
                          sc = fabs((double)o32.d) + fabs((double)zf) + g +
