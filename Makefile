@@ -79,20 +79,23 @@ demo: $(B)/host/afm_demo $(B)/host/mdr
 # analysis, the same suites under ASan+UBSan, the option matrix, fuzzing,
 # the stress sweep, the q31 bit-exactness across compilers, the mutation
 # gate, the cross builds with their symbol checks, the target tests on QEMU
-# and the Python package.
+# and the Python package. The phases whose programs are separate targets
+# build them two at a time (-j2: the machine's two cores); their suites
+# still run one after another, each one's output whole.
 test: deps-check
 	$(MAKE) --no-print-directory spdx-check headers-check docs errno-check
-	$(MAKE) --no-print-directory host-tests
+	$(MAKE) --no-print-directory -j2 host-tests
 	$(MAKE) --no-print-directory demo-check cmake-check install-check
 	$(MAKE) --no-print-directory lint
-	$(MAKE) --no-print-directory san-tests fused-tests
+	$(MAKE) --no-print-directory -j2 san-tests
+	$(MAKE) --no-print-directory -j2 fused-tests
 	$(MAKE) --no-print-directory matrix
 	$(MAKE) --no-print-directory fuzz-replay
-	$(MAKE) --no-print-directory fuzz
+	$(MAKE) --no-print-directory -j2 fuzz
 	$(MAKE) --no-print-directory stress
 	$(MAKE) --no-print-directory q31-exact
 	$(MAKE) --no-print-directory mutate-quick
-	$(MAKE) --no-print-directory cross
+	$(MAKE) --no-print-directory -j2 cross
 	$(MAKE) --no-print-directory target-test
 	$(MAKE) --no-print-directory python-test
 	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) $(FUSED_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
