@@ -80,13 +80,14 @@ demo: $(B)/host/afm_demo $(B)/host/mdr
 # the stress sweep, the q31 bit-exactness across compilers, the mutation
 # gate, the cross builds with their symbol checks, the target tests on QEMU
 # and the Python package. The phases whose programs are separate targets
-# build them two at a time (-j2: the machine's two cores); their suites
-# still run one after another, each one's output whole.
+# build them and run their suites two at a time (-j2: the machine's two
+# cores), each suite's output printed whole, in order (mk/tests.mk,
+# mk/target.mk); lint checks two files at a time.
 test: deps-check
 	$(MAKE) --no-print-directory spdx-check headers-check docs errno-check
 	$(MAKE) --no-print-directory -j2 host-tests
 	$(MAKE) --no-print-directory demo-check cmake-check install-check
-	$(MAKE) --no-print-directory lint
+	$(MAKE) --no-print-directory -j2 lint
 	$(MAKE) --no-print-directory -j2 san-tests
 	$(MAKE) --no-print-directory -j2 fused-tests
 	$(MAKE) --no-print-directory matrix

@@ -49,9 +49,28 @@ $(B)/host/test_%: host_tests/test_%.c $(TEST_HDRS) $$(call test_srcs,test_$$*) $
 $(B)/san/test_%: host_tests/test_%.c $(TEST_HDRS) $$(call test_srcs,test_$$*) $(B)/san/libmdr.a
 	$(HOSTCC) $(TEST_CFLAGS) -O1 -g $(SAN) $< $(call test_srcs,test_$*) $(B)/san/libmdr.a $(call test_libs,test_$*) -o $@
 
+# One suite's run: its output in $(B)/<build>/<suite>.log, a .run stamp
+# when it passed (a failing run prints its log and stops make). A phase
+# removes its stamps and runs its suites two at a time (-j2, the machine's
+# two cores), then prints each suite's log whole, in the list's order. The
+# suites write no file, so two can run side by side.
+define suite_run
+$(B)/$(1)/%.run: $(B)/$(1)/%
+	@rm -f $$@; ./$$< > $$(@:.run=.log) 2>&1 || { cat $$(@:.run=.log); echo "$(2)$$* failed"; exit 1; }; touch $$@
+endef
+$(eval $(call suite_run,host,))
+$(eval $(call suite_run,san,sanitized ))
+$(eval $(call suite_run,fused,fused ))
+# the CLI's contract (host_tests/test_cli.sh: its files in a mktemp dir)
+$(B)/host/cli.run: $(B)/host/mdr host_tests/test_cli.sh
+	@rm -f $@; bash host_tests/test_cli.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "cli failed"; exit 1; }; touch $@
+# run_suites(build, suites, title prefix): run, then print the logs
+run_suites = rm -f $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
+  $(MAKE) --no-print-directory -j2 $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
+  for t in $(2); do echo "== $(3)$$t"; cat $(B)/$(1)/$$t.log; done
+
 host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
-	@for t in $(TESTS); do echo "== $$t"; ./$(B)/host/$$t || exit 1; done
-	@echo "== cli"; bash host_tests/test_cli.sh $(B)/host/mdr
+	@$(call run_suites,host,$(TESTS) cli,)
 $(B)/fused/%.o: lib/src/%.c $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(HOSTCC) $(MDR_CFLAGS) -O2 -DMDR_PORT_FUSED -c $< -o $@
@@ -62,9 +81,9 @@ $(B)/fused/test_%: host_tests/test_%.c $(TEST_HDRS) $(B)/fused/libmdr.a
 fused-tests: $(addprefix $(B)/fused/,$(FUSED_TESTS))
 	@nm $(B)/fused/mdr_f32.o | grep -q ' U fmaf$$' || echo | $(HOSTCC) -dM -E - | grep -q __FP_FAST_FMAF || \
 	  { echo "fused-tests: the library neither calls fmaf nor has the instruction"; exit 1; }
-	@for t in $(FUSED_TESTS); do echo "== fused $$t"; ./$(B)/fused/$$t || exit 1; done
+	@$(call run_suites,fused,$(FUSED_TESTS),fused )
 san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
-	@for t in $(SAN_TESTS); do echo "== sanitized $$t"; ./$(B)/san/$$t || exit 1; done
+	@$(call run_suites,san,$(SAN_TESTS),sanitized )
 
 # Build matrix over the compile-time options (lib/include/mdr_options.h):
 # every configuration compiles warning-free and passes the suites that
