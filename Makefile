@@ -37,6 +37,9 @@ HOSTCC := $(CROSS_COMPILE)$(CC)
 PYTHON := /usr/bin/python3
 
 B := build
+# a phase's own runs, two at a time: -j2, unless make already runs with a
+# job server (make -j2 test-phase), whose slots the sub-make then shares
+SUB_J2 = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j2)
 WARN := -Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow -Wvla -Werror
 MDR_CFLAGS = $(MDR_REQUIRED_CFLAGS) $(WARN) -Ilib/include -Iport/host
 TEST_CFLAGS := -std=c99 -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -Iref -Iport/host

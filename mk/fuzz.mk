@@ -31,14 +31,22 @@ $(B)/san/replay_%: host_tests/fuzz/fuzz_%.c host_tests/fuzz/replay.c $(FUZZ_HDRS
 fuzz-replay: $(addprefix $(B)/san/replay_,$(FUZZ_TARGETS))
 	@for t in $(FUZZ_TARGETS); do printf '== fuzz corpus %s: ' $$t; \
 	  ./$(B)/san/replay_$$t host_tests/fuzz/corpus/$$t || exit 1; done
-fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ_TARGETS))
-	@set -e; for t in $(FUZZ_TARGETS); do \
-	  w=$(B)/fuzz/work_$$t; rm -rf $(B)/fuzz/art_$$t; $(if $(FUZZ_TIME),,rm -rf $$w;) mkdir -p $$w $(B)/fuzz/art_$$t; \
-	  if ./$(B)/fuzz/fuzz_$$t $(FUZZ_ARGS) -timeout=10 -rss_limit_mb=2048 \
+# one fuzzer's run (its output in $(B)/fuzz/<target>.log, its summary line
+# in .sum); make fuzz runs the targets two at a time (-j2) and prints the
+# summaries in order; a failing input is copied into the corpus
+$(B)/fuzz/%.run: $(B)/fuzz/fuzz_%
+	@rm -f $@; t=$*; w=$(B)/fuzz/work_$$t; rm -rf $(B)/fuzz/art_$$t; $(if $(FUZZ_TIME),,rm -rf $$w;) \
+	  mkdir -p $$w $(B)/fuzz/art_$$t; \
+	  if ./$< $(FUZZ_ARGS) -timeout=10 -rss_limit_mb=2048 \
 	       -artifact_prefix=$(B)/fuzz/art_$$t/ $$w host_tests/fuzz/corpus/$$t > $(B)/fuzz/$$t.log 2>&1; then \
 	    echo "== fuzz $$t: $$(grep -o 'Done [0-9]* runs in [0-9]* second' $(B)/fuzz/$$t.log | tail -1)s, \
-	      coverage $$(grep -o 'cov: [0-9]*' $(B)/fuzz/$$t.log | tail -1 | cut -d' ' -f2), no failure"; \
+	      coverage $$(grep -o 'cov: [0-9]*' $(B)/fuzz/$$t.log | tail -1 | cut -d' ' -f2), no failure" > $(B)/fuzz/$$t.sum; \
 	  else \
 	    tail -40 $(B)/fuzz/$$t.log; cp $(B)/fuzz/art_$$t/* host_tests/fuzz/corpus/$$t/; \
 	    echo "fuzz $$t: failing input copied to host_tests/fuzz/corpus/$$t/ (commit it)"; exit 1; \
-	  fi; done
+	  fi; touch $@
+FUZZ_RUNS_ALL := $(addprefix $(B)/fuzz/,$(addsuffix .run,$(FUZZ_TARGETS)))
+fuzz: $(addprefix $(B)/fuzz/fuzz_,$(FUZZ_TARGETS))
+	@rm -f $(FUZZ_RUNS_ALL)
+	@$(MAKE) --no-print-directory $(SUB_J2) $(FUZZ_RUNS_ALL)
+	@for t in $(FUZZ_TARGETS); do cat $(B)/fuzz/$$t.sum; done

@@ -34,12 +34,27 @@ endef
 $(foreach u,$(LINT_UNITS),$(eval $(call lint_rule,$(u))))
 CPPCHECK := cppcheck --std=c99 --enable=warning,style,performance,portability --inline-suppr \
             --suppressions-list=.cppcheck-suppressions --error-exitcode=1 -q
-$(B)/lint/cppcheck.stamp: $(LINT_LIB) $(LINT_HOST) $(LINT_CM) $(LINT_RV) .cppcheck-suppressions $(LIB_DEPS) $(wildcard examples/*.h ref/*.h)
-	@mkdir -p $(@D)
-	$(CPPCHECK) -j2 -Ilib/include -Iport/host $(LINT_LIB)
-	$(CPPCHECK) -D_GNU_SOURCE $(LINT_LC) -Ilib/include -Iport/host -Iref $(LINT_HOST)
-	$(CPPCHECK) -DMDR_RAM_REPORT -Ilib/include -Iport/cortex-m $(LINT_CM)
-	$(CPPCHECK) -Ilib/include -Iport/riscv $(LINT_RV)
+# cppcheck: one stamp per file group (runs under make -j2 beside clang-tidy;
+# the library's with cppcheck -j2 as before, which also leaves out its
+# whole-program analysis)
+CPPCHECK_DEPS := .cppcheck-suppressions $(LIB_DEPS) $(wildcard examples/*.h ref/*.h)
+CPPCHECK_lib := -j2 -Ilib/include -Iport/host
+CPPCHECK_host := -D_GNU_SOURCE $(LINT_LC) -Ilib/include -Iport/host -Iref
+CPPCHECK_cm := -DMDR_RAM_REPORT -Ilib/include -Iport/cortex-m
+CPPCHECK_rv := -Ilib/include -Iport/riscv
+CPPCHECK_FILES_lib := $(LINT_LIB)
+CPPCHECK_FILES_host := $(LINT_HOST)
+CPPCHECK_FILES_cm := $(LINT_CM)
+CPPCHECK_FILES_rv := $(LINT_RV)
+CPPCHECK_GROUPS := lib host cm rv
+define cppcheck_rule
+$(B)/lint/cppcheck-$(1).stamp: $(CPPCHECK_FILES_$(1)) $(CPPCHECK_DEPS)
+	@mkdir -p $$(@D)
+	$(CPPCHECK) $(CPPCHECK_$(1)) $(CPPCHECK_FILES_$(1))
+	@touch $$@
+endef
+$(foreach g,$(CPPCHECK_GROUPS),$(eval $(call cppcheck_rule,$(g))))
+$(B)/lint/cppcheck.stamp: $(foreach g,$(CPPCHECK_GROUPS),$(B)/lint/cppcheck-$(g).stamp)
 	@echo "cppcheck: clean" && touch $@
 lint: $(B)/lint/cppcheck.stamp $(foreach u,$(LINT_UNITS),$(call lint_stamp,$(u)))
 	@echo "lint: cppcheck and clang-tidy clean ($(words $(LINT_UNITS)) clang-tidy units)"

@@ -121,7 +121,7 @@ $(B)/ownsqrt/host/gen_tip.c $(B)/ownsqrt/host/test_vectors: $(LIB_SRC) $(LIB_DEP
 TGT_RUNS := $(foreach t,$(TGT_CORES),$(addprefix $(B)/tgt-$(t)/,$(addsuffix .run,$(TGT_TESTS_$(t)))))
 target-test:
 	@rm -f $(TGT_RUNS)
-	@$(MAKE) --no-print-directory -j2 $(TGT_RUNS) || { echo "target-test: failed"; exit 1; }
+	@$(MAKE) --no-print-directory $(SUB_J2) $(TGT_RUNS) || { echo "target-test: failed"; exit 1; }
 	@$(foreach t,$(TGT_CORES),$(foreach x,$(TGT_TESTS_$(t)),\
 	  echo "== target $(TGT_NAME_$(t)): $(x) $$(cat $(B)/tgt-$(t)/$(x).time)"; cat $(B)/tgt-$(t)/$(x).log;))
 	@a=$$($(MDR_CM_PREFIX)nm $(B)/tgt-m3/q31_trace.elf | awk '$$3=="mdr_engine_step_d_q31"{print $$1}'); \

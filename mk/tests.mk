@@ -66,11 +66,11 @@ $(B)/host/cli.run: $(B)/host/mdr host_tests/test_cli.sh
 	@rm -f $@; bash host_tests/test_cli.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "cli failed"; exit 1; }; touch $@
 # run_suites(build, suites, title prefix): run, then print the logs
 run_suites = rm -f $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
-  $(MAKE) --no-print-directory -j2 $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
+  $(MAKE) --no-print-directory $(SUB_J2) $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
   for t in $(2); do echo "== $(3)$$t"; cat $(B)/$(1)/$$t.log; done
 
 host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
-	@$(call run_suites,host,$(TESTS) cli,)
+	@+$(call run_suites,host,$(TESTS) cli,)
 $(B)/fused/%.o: lib/src/%.c $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(HOSTCC) $(MDR_CFLAGS) -O2 -DMDR_PORT_FUSED -c $< -o $@
@@ -81,9 +81,9 @@ $(B)/fused/test_%: host_tests/test_%.c $(TEST_HDRS) $(B)/fused/libmdr.a
 fused-tests: $(addprefix $(B)/fused/,$(FUSED_TESTS))
 	@nm $(B)/fused/mdr_f32.o | grep -q ' U fmaf$$' || echo | $(HOSTCC) -dM -E - | grep -q __FP_FAST_FMAF || \
 	  { echo "fused-tests: the library neither calls fmaf nor has the instruction"; exit 1; }
-	@$(call run_suites,fused,$(FUSED_TESTS),fused )
+	@+$(call run_suites,fused,$(FUSED_TESTS),fused )
 san-tests: $(addprefix $(B)/san/,$(SAN_TESTS))
-	@$(call run_suites,san,$(SAN_TESTS),sanitized )
+	@+$(call run_suites,san,$(SAN_TESTS),sanitized )
 
 # Build matrix over the compile-time options (lib/include/mdr_options.h):
 # every configuration compiles warning-free and passes the suites that
@@ -111,15 +111,24 @@ stress: $(B)/host/stress
 # changes that file in the same commit, with the reason.
 EXACT_BUILDS := gcc:-O0 gcc:-O2 gcc:-O3 clang:-O0 clang:-O2 clang:-Os
 Q31_EXPECTED := host_tests/q31_trace.expected
+# one build: the library and host_tests/q31_trace.c by compiler cc at opt,
+# its fingerprint in $(B)/exact/<cc><opt>.out (two builds at a time: -j2)
+define exact_rule
+$(B)/exact/$(subst :,,$(1)).out: $(LIB_SRC) $(LIB_DEPS) host_tests/q31_trace.c
+	@rm -f $$@; d=$(B)/exact/$(subst :,,$(1)); mkdir -p $$$$d && \
+	  for o in mdr_f32 mdr_f64 mdr_q31 mdr_status; do \
+	    $(word 1,$(subst :, ,$(1))) -std=c99 -ffreestanding -fno-math-errno $(WARN) -Ilib/include -Iport/host \
+	      $(word 2,$(subst :, ,$(1))) -c lib/src/$$$$o.c -o $$$$d/$$$$o.o || exit 1; done && \
+	  $(word 1,$(subst :, ,$(1))) -std=c99 $(WARN) -Ilib/include $(word 2,$(subst :, ,$(1))) host_tests/q31_trace.c \
+	    $$$$d/mdr_*.o -o $$$$d/q31_trace && ./$$$$d/q31_trace > $$@.tmp && mv $$@.tmp $$@
+endef
+$(foreach b,$(EXACT_BUILDS),$(eval $(call exact_rule,$(b))))
+EXACT_OUTS := $(foreach b,$(EXACT_BUILDS),$(B)/exact/$(subst :,,$(b)).out)
 q31-exact:
-	@mkdir -p $(B)/exact
+	@rm -f $(EXACT_OUTS)
+	@$(MAKE) --no-print-directory $(SUB_J2) $(EXACT_OUTS)
 	@set -e; ref="$$(cat $(Q31_EXPECTED))"; for b in $(EXACT_BUILDS); do \
-	  cc=$${b%%:*}; opt=$${b#*:}; out=$(B)/exact/q31_trace_$$cc$$opt; \
-	  $$cc -std=c99 -ffreestanding -fno-math-errno $(WARN) -Ilib/include -Iport/host $$opt \
-	    lib/src/mdr_f32.c lib/src/mdr_f64.c lib/src/mdr_q31.c lib/src/mdr_status.c -c; \
-	  mv mdr_f32.o mdr_f64.o mdr_q31.o mdr_status.o $(B)/exact/; \
-	  $$cc -std=c99 $(WARN) -Ilib/include $$opt host_tests/q31_trace.c $(B)/exact/mdr_*.o -o $$out; \
-	  r=$$(./$$out); echo "$$cc $$opt: $$r"; \
+	  cc=$${b%%:*}; opt=$${b#*:}; r="$$(cat $(B)/exact/$$cc$$opt.out)"; echo "$$cc $$opt: $$r"; \
 	  if [ "$$r" != "$$ref" ]; then echo "q31 outputs differ from $(Q31_EXPECTED): $$ref"; exit 1; fi; \
 	done; echo "q31-exact: $(words $(EXACT_BUILDS)) builds, outputs identical to $(Q31_EXPECTED)"
 
