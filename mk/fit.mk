@@ -16,8 +16,9 @@
 #                   -DMDR_FIT_KNOWN_DEFECTS: the tests that fail until they
 #                   are fixed, named in FIT_KNOWN_DEFECTS below or
 #                   TESTS_KNOWN=...; not in make test, and it exits 1 while
-#                   one fails; docs/fitting.md lists them). None at present:
-#                   it says so and exits 0
+#                   one fails; docs/fitting.md lists them). Open: a tilted
+#                   baseline, a step in the free tail, f32 at a large
+#                   piezo offset (stop 39)
 
 TESTS += test_fit
 SAN_TESTS += test_fit
@@ -35,7 +36,7 @@ $(B)/host/mdr: private override CFLAGS += -pthread
 
 # the tests of the known, open defects (cmocka's filter: names, * and ?);
 # test_f32_pinned_offset, the last, fixed and in make test since
-FIT_KNOWN_DEFECTS :=
+FIT_KNOWN_DEFECTS := test_known_*
 .PHONY: fit-cli bench-fit fit-plot test-fit-known
 test-fit-known: $(B)/host/libmdr.a
 ifeq ($(strip $(or $(TESTS_KNOWN),$(FIT_KNOWN_DEFECTS))),)
