@@ -124,8 +124,10 @@ void mdr_fit_defaults_f32(mdr_fit_opts_f32 *o, float k_m);
  * Steps: (1) the curve is checked and read: the retract from the largest z,
  * its pull-off (the largest rise of F after the force minimum, followed by at
  * least MDR_FIT_MIN_FREE free points), the baseline (mean of the free
- * points) and the noise (from their successive differences), the zero-force
- * point. (2) First guess, and the whole answer of MDR_FIT_TWO_POINT: the
+ * points) and the noise (from their successive differences, leaving out
+ * those beyond 6 of their standard deviation: a tether's step or a glitch
+ * in the free tail is no noise, and its samples are then the model's
+ * misfit), the zero-force point. (2) First guess, and the whole answer of MDR_FIT_TWO_POINT: the
  * two-point method (E*, w such that the model's fold force under k_m is the
  * measured pull-off force and the depth d = z - F/k_m between the zero-force
  * point and the pull-off is the measured one; exact for the model with the
