@@ -17,7 +17,7 @@
 #                   are fixed, named in FIT_KNOWN_DEFECTS below or
 #                   TESTS_KNOWN=...; not in make test, and it exits 1 while
 #                   one fails; docs/fitting.md lists them). Open: a tilted
-#                   baseline, f32 at a large piezo offset (stop 39)
+#                   baseline (stop 39)
 
 TESTS += test_fit
 SAN_TESTS += test_fit
