@@ -68,7 +68,11 @@ FLT_MAX = float(np.finfo(np.float32).max)
 
 def narrow(arith, where, **values):
     """The values as floats; for f32 a finite value beyond float's range is
-    refused (MDR_E_OVERFLOW) instead of becoming inf on the way to C."""
+    refused (MDR_E_OVERFLOW) instead of becoming inf on the way to C. A bool
+    is no number here (k_machine=True is a mistake, not 1 N/m): TypeError."""
+    for name, v in values.items():
+        if isinstance(v, (bool, np.bool_)):
+            raise TypeError("%s: %s must be a number, not %r" % (where, name, v))
     out = [float(v) for v in values.values()]
     if arith == "f32":
         for (name, _), v in zip(values.items(), out):

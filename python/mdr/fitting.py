@@ -105,7 +105,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
         (MDR_E_PINNED).
 
     Returns a FitResult. A curve or an argument the library refuses raises
-    mdr.Error with its status: MDR_E_FEW (too few points), MDR_E_NOCONTACT,
+    mdr.Error with its status: MDR_E_FEW (too few points, or none), MDR_E_NOCONTACT,
     MDR_E_NOPULLOFF (never separates), MDR_E_ORDER (z increases within the
     retract, or the curve is in reversed time order), MDR_E_NONFINITE (a NaN or inf sample, .index its position),
     MDR_E_PARAM (k_machine, z_e, E0/w0), MDR_E_KIND (flat punch),
@@ -117,6 +117,9 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     MDR_E_JUMPS, MDR_E_PINNED (a retract
     straight to its pull-off: pinned until it ruptures, or, in noisy data
     without unpinned=True, a pinned top the noise hides), MDR_E_RADIUS, ...
+    TypeError: a bool for a number (k_machine, z_e, E0, w0), approach or
+    unpinned other than True, False, 0 or 1. ValueError: arith, or masked
+    samples in z or F (pass the unmasked ones).
     """
     if arith not in ("f32", "f64"):
         raise ValueError("fit: arith must be 'f32' or 'f64', not %r" % (arith,))
@@ -133,12 +136,21 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
         tip = Contact(c_or_profile, E=1.0, w=0.0, arith=arith, **params)  # E*, w unused (as mdr fit)
     else:
         raise TypeError("fit: c_or_profile must be an mdr.Contact or a profile name, not %r" % (c_or_profile,))
+    for name, v in (("approach", approach), ("unpinned", unpinned)):
+        if not isinstance(v, (bool, np.bool_)) and not (isinstance(v, (int, np.integer)) and v in (0, 1)):
+            raise TypeError("fit: %s must be True or False, not %r" % (name, v))
+    for name, v in (("z", z), ("F", F)):
+        if np.ma.isMaskedArray(v) and np.ma.getmaskarray(v).any():
+            raise ValueError("fit: %s has masked samples; pass the unmasked ones (both arrays, the same "
+                             "samples)" % name)
     z = np.array(z, dtype=np.float64).copy(order="C")
     F = np.array(F, dtype=np.float64).copy(order="C")
     if z.ndim != 1 or z.shape != F.shape:
         raise Error(lib.MDR_E_PARAM, "fit: z and F must be 1-D arrays of one length (got shapes %s and %s)"
                     % (z.shape, F.shape))
     n = z.size
+    if n == 0:
+        raise Error(lib.MDR_E_FEW, "fit: no samples")
     if n > 2**31 - 1:
         raise Error(lib.MDR_E_SIZE, "fit: %d samples (at most 2^31 - 1)" % n)
     z_e = Z_E_DEFAULT if z_e is None else z_e

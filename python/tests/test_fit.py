@@ -259,6 +259,21 @@ def test_refusals(curve, arith):
         mdr.fit(z, F, "paraboloid", k_machine=0.2)  # missing R
     with pytest.raises(TypeError):
         mdr.fit(z, F, 3.0, k_machine=0.2)
+    # (a helper's finds, stop 39) a bool is no stiffness, a string no flag, a
+    # masked sample no sample, an empty curve no curve
+    with pytest.raises(TypeError):
+        mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=True, arith=arith)
+    for flag in ("approach", "unpinned"):
+        with pytest.raises(TypeError):
+            mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2, arith=arith, **{flag: "no"})
+        with pytest.raises(TypeError):
+            mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2, arith=arith, **{flag: 2})
+    zm = np.ma.masked_array(z, mask=np.arange(len(z)) == 5)
+    with pytest.raises(ValueError):
+        mdr.fit(zm, F, "paraboloid", **tip)
+    with pytest.raises(ValueError):
+        mdr.fit(z, np.ma.masked_array(F, mask=np.arange(len(F)) == 5), "paraboloid", **tip)
+    raises("MDR_E_FEW", z[:0], F[:0], "paraboloid", **tip)
 
 
 def test_hidden_pinned_top(curve):
