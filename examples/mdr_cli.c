@@ -253,14 +253,14 @@ static const struct {
     {"R", "m"}, {"theta", "rad"}, {"C", "m^(1-n)"}, {"n", "1"}, {"b", "m"}, {"h", "m"},
     {"lambda", "m"}, {"E", "Pa"}, {"w", "J/m^2"}, {"w_adv", "J/m^2"}, {"k_m", "N/m"},
     {"E_err", "Pa"}, {"w_err", "J/m^2"}, {"w_adv_err", "J/m^2"}, {"z0", "m"}, {"z0_err", "m"},
-    {"F_base", "N"}, {"F_base_err", "N"}, {"mu", "1"}, {"R_mu", "m"}, {"z_e", "m"}, {"rms", "N"},
+    {"F_base", "N"}, {"F_base_err", "N"}, {"F_slope", "N/m"}, {"F_slope_err", "N/m"}, {"mu", "1"}, {"R_mu", "m"}, {"z_e", "m"}, {"rms", "N"},
     {"pull_off_z", "m"}, {"a_pull_off", "m"}, {"E0", "Pa"}, {"w0", "J/m^2"},
 };
 
 /* a JSON writer that remembers the keys it wrote, for the units object */
 typedef struct {
     FILE *fp;
-    const char *keys[48];
+    const char *keys[52];
     int nk, first, f64; /* f64: 17 digits, else 9 (a float's round trip) */
 } cli_json;
 
@@ -672,8 +672,9 @@ static const char *const usage_cmd[NCMD] = {
     /* fit */
     "usage: mdr fit (--curve FILE | --map FILE) <profile> --k-machine K [--arith f32|f64]\n"
     "               [--method full|two-point] [--approach] [--unpinned] [--z-e ZE] [--E0 E --w0 W]\n"
-    "               [--model FILE] [--jobs N]\n"
-    "  fits E*, w (and the base offset z0, force baseline F_base) to a measured\n"
+    "               [--flat-baseline] [--model FILE] [--jobs N]\n"
+    "  fits E*, w (and the base offset z0, force baseline F_base and its slope\n"
+    "  F_slope, held at 0 with --flat-baseline) to a measured\n"
     "  force curve z,F (CSV, --curve: JSON on stdout) or to every curve of a map\n"
     "  (curve,z,F, --map: CSV on stdout). See docs/fitting.md.\n",
 };

@@ -7,6 +7,7 @@
  *
  *   mdr fit --curve curve.csv <profile> --k-machine K [--method full|two-point]
  *           [--z-e ZE] [--arith f32|f64] [--E0 E --w0 W] [--approach] [--unpinned]
+ *           [--flat-baseline]
  *   mdr fit --map map.csv <profile> --k-machine K [--jobs J] [same options]
  *
  *   <profile>  --profile paraboloid --R R | cone --theta RAD | powerlaw --C C
@@ -29,13 +30,16 @@
  *              no pinned top is looked for (every sample fitted), and a
  *              retract straight within its noise to the pull-off is
  *              fitted instead of refused (MDR_E_PINNED)
+ *   --flat-baseline  the force baseline is flat (its slope subtracted
+ *              already): F_slope held at 0 (default: the baseline
+ *              F_base + F_slope (z - z0) is fitted, slope and all)
  *   --jobs     threads for a map (default: every core)
  *   --model F  (with --curve) also write the fitted model: CSV z,F,F_model,
  *              branch (approach with w_adv, or w without --approach;
  *              retract), for plots and residuals
  *
  * --curve prints one JSON object: E w z0 F_base E_err w_err z0_err
- * F_base_err mu R_mu z_e regime rms pull_off_F pull_off_z a_pull_off n
+ * F_base_err F_slope F_slope_err mu R_mu z_e regime rms pull_off_F pull_off_z a_pull_off n
  * n_pinned method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
  * A fit that fails prints {"status": ..., "message": ...} and exits 1.
  * --map prints CSV curve,E,w,z0,F_base,mu,rms,status, one row per curve in
@@ -51,7 +55,7 @@
 
 struct fit_args {
     const char *file, *model, *tipfile;
-    int map, f64, approach, unpinned, jobs, pi, have_E0; /* pi: -1 for --profile table */
+    int map, f64, approach, unpinned, flat, jobs, pi, have_E0; /* pi: -1 for --profile table */
     uint8_t kind, method;
     double p[3], k_m, z_e, E0, w0;
     /* --profile table: the samples as each arithmetic's contact takes them
@@ -64,7 +68,8 @@ struct fit_args {
 /* one result in double, whatever the arithmetic */
 typedef struct {
     mdr_status st;
-    double E, w, z0, F_base, E_err, w_err, z0_err, F_base_err, rms, pull_off_F, pull_off_z, a_pull_off;
+    double E, w, z0, F_base, E_err, w_err, z0_err, F_base_err, F_slope, F_slope_err, rms, pull_off_F, pull_off_z;
+    double a_pull_off;
     double mu, R_mu, w_adv, w_adv_err;
     uint32_t n, n_approach, n_pinned;
     uint16_t iterations;
@@ -399,7 +404,9 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
     }
     fprintf(fp, "z,F,F_model,branch\n");
     for (i = 0; i < c->n; i++) {
-        fprintf(fp, "%.17g,%.17g,%.17g,%s\n", c->z[i], c->F[i], Fm[i], i < top ? "approach" : "retract");
+        /* the model over the baseline F_base + F_slope (z - z0) */
+        const double Fmi = Fm[i] + c->res.F_slope * (c->z[i] - c->res.z0);
+        fprintf(fp, "%.17g,%.17g,%.17g,%s\n", c->z[i], c->F[i], Fmi, i < top ? "approach" : "retract");
     }
     free(Fm);
     werr = ferror(fp);
@@ -439,6 +446,8 @@ static void fit_json_end(cli_json *j, const struct fit_args *A)
     fputs(A->approach ? "true" : "false", in.fp);
     json_key(&in, "unpinned");
     fputs(A->unpinned ? "true" : "false", in.fp);
+    json_key(&in, "flat_baseline");
+    fputs(A->flat ? "true" : "false", in.fp);
     json_str(&in, "arith", A->f64 ? "f64" : "f32");
     fputc('}', j->fp);
     json_units(j, &in, "m");
@@ -525,6 +534,8 @@ static int fit_curve_cmd(const struct fit_args *A)
     json_num(&j, "w_err", c.res.w_err);
     json_num(&j, "z0_err", c.res.z0_err);
     json_num(&j, "F_base_err", c.res.F_base_err);
+    json_num(&j, "F_slope", c.res.F_slope);
+    json_num(&j, "F_slope_err", c.res.F_slope_err);
     json_num(&j, "mu", c.res.mu);
     json_num(&j, "R_mu", c.res.R_mu);
     json_num(&j, "z_e", A->z_e);
@@ -1006,7 +1017,7 @@ static int fit_flag(const char *f)
 
 static int fit_main(int argc, char **argv)
 {
-    static const char *const fit_bools[] = {"--approach", "--unpinned", NULL};
+    static const char *const fit_bools[] = {"--approach", "--unpinned", "--flat-baseline", NULL};
     struct cli_kv kv[CLI_MAX_FLAGS];
     int nkv;
     struct fit_args A;
@@ -1035,6 +1046,8 @@ static int fit_main(int argc, char **argv)
             A.approach = 1;
         } else if (strcmp(f, "--unpinned") == 0) {
             A.unpinned = 1;
+        } else if (strcmp(f, "--flat-baseline") == 0) {
+            A.flat = 1;
         } else if (strcmp(f, "--curve") == 0 || strcmp(f, "--map") == 0) {
             if (A.file != NULL) {
                 return usage_error("give one of --curve FILE or --map FILE", NULL);

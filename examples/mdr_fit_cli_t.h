@@ -48,6 +48,7 @@ static mdr_status FIT_SFX(fit_run)(const struct fit_args *A, const double *z, co
     opt.method = A->method;
     opt.approach = A->approach ? 1u : 0u;
     opt.unpinned = A->unpinned ? 1u : 0u;
+    opt.flat = A->flat ? 1u : 0u;
     st = FIT_SFX(mdr_fit_curve)(&tip, &opt, zt, Ft, (uint32_t)n, wk, MDR_FIT_WORK_LEN(n), &r);
     o->st = st;
     if (st != MDR_OK) {
@@ -61,6 +62,8 @@ static mdr_status FIT_SFX(fit_run)(const struct fit_args *A, const double *z, co
     o->w_err = (double)r.w_err;
     o->z0_err = (double)r.z0_err;
     o->F_base_err = (double)r.F_base_err;
+    o->F_slope = (double)r.F_slope;
+    o->F_slope_err = (double)r.F_slope_err;
     o->rms = (double)r.rms;
     o->pull_off_F = (double)r.pull_off_F;
     o->pull_off_z = (double)r.pull_off_z;

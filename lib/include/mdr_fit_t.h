@@ -55,6 +55,11 @@ typedef struct {
                            top could hide in (MDR_E_PINNED; a line that
                            explains it better than the branch is still
                            refused); default 0 */
+    uint8_t flat;     /**< 1: the caller knows the force baseline is flat (its
+                           slope subtracted): F_slope held at 0, one parameter
+                           fewer; default 0: the baseline F_base + F_slope
+                           (z - z0) is fitted, slope and all (an interferometric
+                           or virtual-deflection tilt, as raw AFM data carry) */
 } MDR_SFX(mdr_fit_opts);
 
 /** Result of a fit (SI). */
@@ -62,10 +67,11 @@ typedef struct {
     MDR_T E;          /**< effective modulus E* [Pa] */
     MDR_T w;          /**< work of adhesion w of the retract [J/m^2] */
     MDR_T z0;         /**< base position of first touch at zero force [m] */
-    MDR_T F_base;     /**< force baseline F_b [N] */
+    MDR_T F_base;     /**< force baseline at z0 [N]: the baseline is
+                           F_base + F_slope (z - z0) */
     MDR_T E_err, w_err, z0_err, F_base_err; /**< one standard error each, from
                            the Jacobian at the result: s^2 (J^T J)^-1, s^2 = sum
-                           of squared residuals/(n-4), with the fold's position
+                           of squared residuals/(n-5) (n-4 with opts->flat), with the fold's position
                            between the last contact and the first free sample
                            as a nuisance of at most that interval's spread, and
                            that spread where the result is no minimum in the
@@ -82,6 +88,9 @@ typedef struct {
     MDR_T R_mu;       /**< the tip radius R used in mu [m] (see mdr_tabor_<type>()) */
     MDR_T w_adv;      /**< work of adhesion of the approach [J/m^2] (n_approach > 0) */
     MDR_T w_adv_err;  /**< its standard error [J/m^2] */
+    MDR_T F_slope;    /**< slope of the force baseline dF_b/dz [N/m] (0 with
+                           opts->flat and MDR_FIT_TWO_POINT) */
+    MDR_T F_slope_err; /**< its standard error [N/m] (0 where not fitted) */
     uint32_t n;          /**< retract points used */
     uint32_t n_approach; /**< approach points used for w_adv (0: not fitted) */
     uint32_t n_pinned;   /**< samples at the top of the retract left out as its pinned
@@ -94,14 +103,16 @@ typedef struct {
 
 /**
  * @brief Default options: the given k_m, z_e = MDR_FIT_Z_E_DEFAULT, no first
- *        guess (two-point), MDR_FIT_FULL, no approach fit.
+ *        guess (two-point), MDR_FIT_FULL, no approach fit, the pinned top
+ *        looked for, the baseline's slope fitted.
  * @param[out] o    filled (no check of k_m: mdr_fit_curve_<type>() checks it)
  * @param[in]  k_m  machine (cantilever) stiffness [N/m], copied into o->k_m
  */
 void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
 
 /**
- * @brief Fit E*, w, z0 and F_b to a measured force curve.
+ * @brief Fit E*, w, z0 and the baseline F_b + F_slope (z - z0) to a measured
+ *        force curve.
  *
  * Steps: (1) the curve is checked and read: the retract from the largest z,
  * its pull-off (the largest rise of F after the force minimum, followed by at
@@ -115,7 +126,8 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  * point and the pull-off is the measured one; exact for the model with the
  * given k_m and any profile; z0 from the zero-force point, F_b the
  * baseline), or opts->E0, w0. (3) MDR_FIT_FULL: Levenberg-Marquardt over
- * every retract point in (ln E*, ln w, z0, F_b), analytic Jacobian,
+ * every retract point in (ln E*, ln w, z0, F_b, F_slope; F_slope held at 0
+ * with opts->flat), analytic Jacobian,
  * Marquardt scaling, at most MDR_FIT_ITER_MAX iterations. (4) Standard
  * errors, the model's pull-off, the Tabor parameter and the regime.
  * MDR_FIT_FULL answers only where the model reproduces the curve (rms
@@ -139,7 +151,8 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  * @param[out] out   written only on MDR_OK
  * @return MDR_OK;
  *   bad arguments: MDR_E_NULL, MDR_E_NONFINITE (a NaN or infinite sample or
- *   option), MDR_E_PARAM (k_m, z_e, E0/w0 or method out of range),
+ *   option), MDR_E_PARAM (k_m, z_e, E0/w0, method, approach, unpinned or
+ *   flat out of range),
  *   MDR_E_KIND (flat punch), MDR_E_SIZE (work_len too small, or n beyond
  *   UINT32_MAX/2);
  *   curves the fit cannot read: MDR_E_FEW (fewer than MDR_FIT_MIN_POINTS
@@ -156,7 +169,7 @@ void MDR_SFX(mdr_fit_defaults)(MDR_SFX(mdr_fit_opts) *o, MDR_T k_m);
  *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);
  *   fits that fail: MDR_E_FITCAP (iteration cap, or a pinned top's end not
  *   settled in 8 refits), MDR_E_DEGENERATE (the
- *   data do not determine the four parameters: singular equations, or a
+ *   data do not determine the parameters: singular equations, or a
  *   relative standard error of E* or w of 1 or more, or (full fit, E*'s
  *   above 0.1) a profile of the sum of squares in ln E* that does not rise
  *   by 3 errors within a factor 20 either way; or the two-point

@@ -89,7 +89,7 @@ CONSTANTS = (
 
 # the double fields of mdrpy_fit_res (python/src/mdr_py.h), in its order
 FIT_DOUBLES = ("E", "w", "z0", "F_base", "E_err", "w_err", "z0_err", "F_base_err", "rms", "pull_off_F",
-               "pull_off_z", "a_pull_off", "mu", "R_mu", "w_adv", "w_adv_err")
+               "pull_off_z", "a_pull_off", "mu", "R_mu", "w_adv", "w_adv_err", "F_slope", "F_slope_err")
 
 # structs: cffi lays them out ("...;"); the fields the package reads, each
 # (type, name), are checked by the compiler (CHECK below)
@@ -155,7 +155,8 @@ mdr_status mdrpy_profile_{S}(const mdr_contact_{S} *c, size_t n, const double *x
 mdr_status mdrpy_contact_tip_{S}(mdr_contact_{S} *c, const double *r, const double *f, uint16_t m, double E,
                                  double w, double *s, {T} *buf);
 mdr_status mdrpy_fit_{S}(const mdr_contact_{S} *tip, double k_m, double z_e, double E0, double w0,
-                         uint8_t method, uint8_t approach, uint8_t unpinned, const double *z, const double *F, uint32_t n,
+                         uint8_t method, uint8_t approach, uint8_t unpinned, uint8_t flat, const double *z,
+                         const double *F, uint32_t n,
                          {T} *work, size_t work_len, mdrpy_fit_res *o, size_t *fail);
 mdr_status mdrpy_fit_model_{S}(const mdr_contact_{S} *tip, double k_m, const mdrpy_fit_res *res,
                                double w_approach, const double *z, uint32_t n, {T} *work, size_t work_len,

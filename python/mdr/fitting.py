@@ -19,7 +19,9 @@ class FitResult:
     attributes (SI units).
 
     E [Pa], w [J/m^2], z0 [m] (base position of first touch at zero force),
-    F_base [N] (force baseline), E_err, w_err, z0_err, F_base_err (one
+    F_base [N] (force baseline at z0), F_slope [N/m] (the baseline's slope:
+    it is F_base + F_slope (z - z0); 0 with flat_baseline=True and for
+    two-point), E_err, w_err, z0_err, F_base_err, F_slope_err (one
     standard error each), mu (Tabor parameter), R_mu [m] (the tip radius in
     mu), z_e [m], regime ("JKR", "transition", "DMT"), rms [N] (residual),
     pull_off_F [N] (the model's pull-off force relative to the baseline,
@@ -40,7 +42,8 @@ class FitResult:
 
     def as_dict(self):
         """The JSON fields of `mdr fit --curve` (without status) as a dict."""
-        keys = ["E", "w", "z0", "F_base", "E_err", "w_err", "z0_err", "F_base_err", "mu", "R_mu", "z_e", "regime",
+        keys = ["E", "w", "z0", "F_base", "E_err", "w_err", "z0_err", "F_base_err", "F_slope", "F_slope_err", "mu",
+                "R_mu", "z_e", "regime",
                 "rms", "pull_off_F", "pull_off_z", "a_pull_off"]
         if self.n_approach:
             keys += ["w_adv", "w_adv_err", "n_approach"]
@@ -52,7 +55,7 @@ class FitResult:
         and the index of the first retract sample (the last largest z). Up
         to top the approach branch (work of adhesion w_adv when it was
         fitted, else w), from top on the retract (w); both with the fitted
-        E*, z0, F_base and k_machine, computed in f64 whatever the fit's
+        E*, z0, baseline (F_base + F_slope (z - z0)) and k_machine, computed in f64 whatever the fit's
         arithmetic (mdr_fit_model, as `mdr fit --model`). The approach must
         be monotonic in z for this (else mdr.Error MDR_E_ORDER)."""
         c = self._tip.replace(arith="f64")
@@ -76,8 +79,8 @@ class FitResult:
 
 
 def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", E0=None, w0=None,
-        approach=False, unpinned=False, **params):
-    """Fit E*, w, the contact point z0 and the baseline F_base to a force
+        approach=False, unpinned=False, flat_baseline=False, **params):
+    """Fit E*, w, the contact point z0 and the baseline F_base + F_slope (z - z0) to a force
     curve (libmdr's mdr_fit_curve: the same code as `mdr fit --curve`).
 
     z, F: 1-D arrays of one length, the curve in time order: z the base
@@ -103,6 +106,10 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
         retract sample is fitted, n_pinned = 0), and a retract straight
         within its noise to the pull-off is fitted instead of refused
         (MDR_E_PINNED).
+    flat_baseline: the caller knows the baseline is flat (its slope
+        subtracted already): F_slope held at 0, one parameter fewer (smaller
+        errors of E*; a tilted baseline then biases it). Default: the slope
+        is fitted.
 
     Returns a FitResult. A curve or an argument the library refuses raises
     mdr.Error with its status: MDR_E_FEW (too few points, or none), MDR_E_NOCONTACT,
@@ -117,8 +124,8 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     MDR_E_JUMPS, MDR_E_PINNED (a retract
     straight to its pull-off: pinned until it ruptures, or, in noisy data
     without unpinned=True, a pinned top the noise hides), MDR_E_RADIUS, ...
-    TypeError: a bool for a number (k_machine, z_e, E0, w0), approach or
-    unpinned other than True, False, 0 or 1. ValueError: arith, or masked
+    TypeError: a bool for a number (k_machine, z_e, E0, w0), approach,
+    unpinned or flat_baseline other than True, False, 0 or 1. ValueError: arith, or masked
     samples in z or F (pass the unmasked ones).
     """
     if arith not in ("f32", "f64"):
@@ -136,7 +143,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
         tip = Contact(c_or_profile, E=1.0, w=0.0, arith=arith, **params)  # E*, w unused (as mdr fit)
     else:
         raise TypeError("fit: c_or_profile must be an mdr.Contact or a profile name, not %r" % (c_or_profile,))
-    for name, v in (("approach", approach), ("unpinned", unpinned)):
+    for name, v in (("approach", approach), ("unpinned", unpinned), ("flat_baseline", flat_baseline)):
         if not isinstance(v, (bool, np.bool_)) and not (isinstance(v, (int, np.integer)) and v in (0, 1)):
             raise TypeError("fit: %s must be True or False, not %r" % (name, v))
     for name, v in (("z", z), ("F", F)):
@@ -160,7 +167,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     res = ffi.new("mdrpy_fit_res *")
     fail = ffi.new("size_t *", n)
     st = getattr(lib, "mdrpy_fit_" + arith)(tip._c, k, ze, e0, ww0, METHODS[method], 1 if approach else 0,
-                                            1 if unpinned else 0, dptr(z),
+                                            1 if unpinned else 0, 1 if flat_baseline else 0, dptr(z),
                                             dptr(F), n, work, len(work), res, fail)
     if st != lib.MDR_OK:
         raise _fit_error(st, z, F, fail[0] if fail[0] < n else None, method, arith)

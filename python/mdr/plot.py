@@ -134,12 +134,17 @@ def fit(res, ax=None, length_unit="nm", force_unit="nN", label=None, data=True, 
     zs, Fs = np.concatenate(zs), np.concatenate(Fs)
     line_kw.setdefault("zorder", 3)  # over the data
     line = ax.plot(zs / lu, Fs / fu, label=label, **line_kw)[0]
-    F0 = (res.pull_off_F + res.F_base) / fu
+
+    def base(zz):  # the fitted baseline
+        return res.F_base + res.F_slope * (zz - res.z0)
+
+    F0 = (res.pull_off_F + base(res.pull_off_z)) / fu
     ax.plot([res.pull_off_z / lu], [F0], "v", color=line.get_color(), ms=7)
     ax.annotate("pull-off %.4g %s" % (res.pull_off_F / fu, _LABEL.get(force_unit, force_unit)),
                 (res.pull_off_z / lu, F0), textcoords="offset points", xytext=(8, -4), va="center", fontsize=8,
                 color=line.get_color())
-    ax.axhline(res.F_base / fu, color="0.8", lw=0.6, zorder=0)
+    zb = np.array([res.z.min(), res.z.max()])
+    ax.plot(zb / lu, base(zb) / fu, color="0.8", lw=0.6, zorder=0)
     ax.set_xlabel("base position z [%s]" % _LABEL.get(length_unit, length_unit))
     ax.set_ylabel("force F [%s]" % _LABEL.get(force_unit, force_unit))
     ax.legend(fontsize=8, loc="best")

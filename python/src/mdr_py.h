@@ -103,6 +103,7 @@ typedef struct {
     double pull_off_F, pull_off_z, a_pull_off; /**< model's pull-off [N, m, m] */
     double mu, R_mu;                         /**< Tabor parameter [1], its radius [m] */
     double w_adv, w_adv_err;                 /**< approach (n_approach > 0) [J/m^2] */
+    double F_slope, F_slope_err;             /**< the baseline's slope and its error [N/m] */
     uint32_t n, n_approach;                  /**< points used */
     uint32_t n_pinned;                       /**< retract samples left out as its pinned top */
     uint16_t iterations;                     /**< Levenberg-Marquardt iterations */

@@ -62,7 +62,7 @@ mdr_status MDR_SFX(mdrpy_contact_tip)(MDR_SFX(mdr_contact) *c, const double *r, 
  *        double: converted to the arithmetic (a finite value beyond it is
  *        MDR_E_OVERFLOW, *fail its index), the options set as documented in
  *        mdr_fit_t.h (mdr_fit_defaults(), then k_m, z_e, E0, w0, method,
- *        approach, unpinned), the result widened into *o.
+ *        approach, unpinned, flat), the result widened into *o.
  * @param tip   the profile (its E*, w unused)
  * @param work  mdrpy_fit_work_len(n) elements, caller's
  * @param[out] fail  index of the sample refused in the conversion (written
@@ -70,15 +70,16 @@ mdr_status MDR_SFX(mdrpy_contact_tip)(MDR_SFX(mdr_contact) *c, const double *r, 
  * @return MDR_OK or the status of mdr_fit_curve() (o written only on MDR_OK)
  */
 mdr_status MDR_SFX(mdrpy_fit)(const MDR_SFX(mdr_contact) *tip, double k_m, double z_e, double E0,
-                              double w0, uint8_t method, uint8_t approach, uint8_t unpinned, const double *z,
-                              const double *F, uint32_t n, MDR_T *work, size_t work_len,
+                              double w0, uint8_t method, uint8_t approach, uint8_t unpinned, uint8_t flat,
+                              const double *z, const double *F, uint32_t n, MDR_T *work, size_t work_len,
                               mdrpy_fit_res *o, size_t *fail);
 
 /**
  * @brief The fitted model beside the data, as `mdr fit --model`: up to the
  *        last largest z the approach branch with w_approach (w_adv when it
  *        was fitted, else w), from there the retract with w, both with E*,
- *        z0 and F_b of *res (mdr_fit_model()).
+ *        z0 and the baseline F_base + F_slope (z - z0) of *res
+ *        (mdr_fit_model(), the slope added in double).
  * @param tip   the profile (copied: its material is changed on the copy)
  * @param work  mdrpy_fit_work_len(n) elements, caller's
  * @param Fm    n model forces [N]; written only on MDR_OK
