@@ -2182,6 +2182,77 @@ static void test_tilt(void **state)
     flaw_run("tilted baseline", flaw_tilt, 4, 4, 3e-3, 0);
 }
 
+/* The same tilts on whole curves in time order (order_curve: regimes[1],
+ * NORDER_PTS + NORDER_PTS samples, noise 0.3 %, both branches tilted
+ * alike, 4 seeds each): the approach's free part below the pull-off is one
+ * more observation of the slope (mdr_f_scan, mdr_f_eval). Every answer
+ * within 5 errors in E*, w, F_slope, z0 and F_base (the baseline at z0:
+ * F_base + F_slope (z - z0)) (flaw_run's rule), and the whole
+ * curve's F_slope error below the retract's alone (the approach's part
+ * counted); with opts.approach too. */
+static void test_tilt_approach(void **state)
+{
+    static const double tilt[4] = {-0.05, -0.02, 0.02, 0.05};
+    const jkr_par *p = &regimes[1];
+    const uint64_t saved = noise_state;
+    mdr_contact_f64 c = paraboloid64(p->R);
+    int k, s, i, n_ok = 0, n_all = 0, n_less = 0, n_both = 0;
+    double worst = 0.0;
+    (void)state;
+    noise_state = 0x6a09e667f3bcc908ull;
+    for (k = 0; k < 4; k++) {
+        for (s = 0; s < 4; s++) {
+            const int n = 2 * NORDER_PTS;
+            const double Fpo = fabs(order_curve(p, NORDER_PTS, 0.0, 3e-3, 0.0, zs, Fs));
+            double zlo = zs[0], zhi = zs[0], sl;
+            mdr_fit_opts_f64 o;
+            mdr_fit_result_f64 r, rr;
+            mdr_status st, str;
+            int a;
+            for (i = 0; i < n; i++) {
+                zlo = zs[i] < zlo ? zs[i] : zlo;
+                zhi = zs[i] > zhi ? zs[i] : zhi;
+            }
+            sl = tilt[k] * Fpo / (zhi - zlo);
+            for (i = 0; i < n; i++) {
+                Fs[i] += sl * (zs[i] - 0.5 * (zlo + zhi));
+            }
+            mdr_fit_defaults_f64(&o, p->km);
+            o.unpinned = 1;
+            str = mdr_fit_curve_f64(&c, &o, zs + NORDER_PTS, Fs + NORDER_PTS, NORDER_PTS, work64, 2 * NMAX, &rr);
+            for (a = 0; a < 2; a++) {
+                double dev;
+                o.approach = (uint8_t)a;
+                n_all++;
+                st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
+                if (st != MDR_OK) {
+                    continue;
+                }
+                n_ok++;
+                /* and z0, and F_base at z0 (rev_curve: z0 = 2 um, no baseline but the tilt) */
+                dev = fmax(flaw_dev(p, &r), fabs(r.F_slope - sl) / r.F_slope_err);
+                dev = fmax(dev, fabs(r.z0 - 2e-6) / r.z0_err);
+                dev = fmax(dev, fabs(r.F_base - sl * (2e-6 - 0.5 * (zlo + zhi))) / r.F_base_err);
+                worst = dev > worst ? dev : worst;
+                if (dev > 5.0) {
+                    print_message("tilt %g, seed %d, approach %d: E* %.4g x, w %.4g x, slope %.3g (truth %.3g), %.1f "
+                                  "errors off\n", tilt[k], s, a, r.E / p->E, r.w / p->w, r.F_slope, sl, dev);
+                }
+                if (str == MDR_OK && a == 0) {
+                    n_both++;
+                    n_less += r.F_slope_err < rr.F_slope_err;
+                }
+            }
+        }
+    }
+    noise_state = saved;
+    print_message("tilted whole curves (approach's free part counted): %d of %d answered, worst %.1f errors; F_slope's "
+                  "error below the retract's alone in %d of %d\n", n_ok, n_all, worst, n_less, n_both);
+    assert_true(2 * n_ok >= n_all);
+    assert_true(worst <= 5.0);
+    assert_true(n_both > 0 && n_less == n_both);
+}
+
 /* A step in the free tail: a tether that holds 10 % or 20 % of the
  * pull-off force for the first 60 % of the free samples, then lets go, or
  * one glitch sample of half or all of the pull-off force (noise 0.3 %,
@@ -2568,6 +2639,7 @@ int main(void)
         cmocka_unit_test(test_tail_step),
         cmocka_unit_test(test_f32_offset),
         cmocka_unit_test(test_tilt),
+        cmocka_unit_test(test_tilt_approach),
 #endif
         /* the fit's known, open defects (make test-fit-known, built with
          * -DMDR_FIT_KNOWN_DEFECTS; docs/fitting.md): none open */
