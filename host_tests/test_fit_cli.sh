@@ -32,7 +32,8 @@ for arith in f64 f32; do
     tol=1e-7
     [ $arith = f32 ] && tol=1e-3
     out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --arith $arith) && ok || bad "fit exit ($arith): $out"
-    for k in E w z0 F_base E_err w_err z0_err F_base_err mu regime rms pull_off_F n n_pinned method iterations; do
+    for k in E w z0 F_base E_err w_err z0_err F_base_err F_slope F_slope_err mu regime rms pull_off_F n n_pinned \
+        method iterations; do
         [ -n "$(key "$out" $k)" ] && ok || bad "fit: key $k missing ($arith) in $out"
     done
     near "$(key "$out" E)" 1e9 $tol && ok || bad "engine round trip E ($arith): $out"
@@ -43,6 +44,28 @@ for arith in f64 f32; do
     [ "$(key "$out" method)" = '"full"' ] && ok || bad "method key ($arith)"
     [ "$(key "$out" n)" = 1001 ] && ok || bad "n = the retract's points ($arith)"
 done
+# the baseline's slope: the same cycle with a tilt of 3e-3 N/m (4 % of the
+# pull-off force over the curve's 60 nm) fitted back (E*, w, z0 and
+# F_slope to 1e-7; F_base is the baseline at z0, 2e-10 + 3e-3 z0 there);
+# --flat-baseline holds F_slope at 0 (keys 0, input echoed) and is biased
+awk -F, 'NR == 1 { print; next } { printf "%.17g,%.17g\n", $1, $2 + 3e-3 * ($1 - 1e-6) }' "$TMP/c.csv" > "$TMP/t.csv"
+out=$("$MDR" fit --curve "$TMP/t.csv" $TIP --k-machine 0.2) && ok || bad "tilted fit exit: $out"
+near "$(key "$out" E)" 1e9 1e-7 && ok || bad "tilted: E: $out"
+near "$(key "$out" w)" 0.05 1e-7 && ok || bad "tilted: w: $out"
+near "$(key "$out" z0)" 1e-6 1e-7 && ok || bad "tilted: z0: $out"
+near "$(key "$out" F_slope)" 3e-3 1e-7 && ok || bad "tilted: F_slope: $out"
+near "$(key "$out" F_base)" 2e-10 1e-6 && ok || bad "tilted: F_base at z0: $out"
+out=$("$MDR" fit --curve "$TMP/t.csv" $TIP --k-machine 0.2 --flat-baseline)
+[ "$(key "$out" F_slope)" = 0 ] && [ "$(key "$out" F_slope_err)" = 0 ] || [ "$(key "$out" status)" != '"ok"' ] &&
+    ok || bad "--flat-baseline: F_slope held at 0: $out"
+echo "$out" | grep -q '"flat_baseline": true' && ok || bad "--flat-baseline echoed in input: $out"
+if [ "$(key "$out" status)" = '"ok"' ]; then
+    near "$(key "$out" E)" 1e9 1e-3 && bad "--flat-baseline on a tilted curve: E not biased? $out" || ok
+else
+    ok
+fi
+out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --flat-baseline) && ok || bad "flat fit exit: $out"
+near "$(key "$out" E)" 1e9 1e-7 && ok || bad "--flat-baseline on a flat curve: E: $out"
 # a pinned top: the same cycle with w_adv < w (the retract starts at the
 # approach's largest contact, held until the force meets the receding
 # branch): the fit leaves that part out (n_pinned) and recovers E* and w
