@@ -41,7 +41,8 @@
  * --curve prints one JSON object: E w z0 F_base E_err w_err z0_err
  * F_base_err F_slope F_slope_err mu R_mu z_e regime rms pull_off_F pull_off_z a_pull_off n
  * n_pinned method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
- * A fit that fails prints {"status": ..., "message": ...} and exits 1.
+ * A fit that fails prints {"status": ..., "message": ...} (and "hint" for
+ * MDR_E_DEGENERATE of the full fit with the slope fitted) and exits 1.
  * --map prints CSV curve,E,w,z0,F_base,mu,rms,status, one row per curve in
  * the input's order (status "ok" or the library's status name; the other
  * fields empty when the fit failed), a progress bar on stderr when stderr
@@ -518,6 +519,11 @@ static int fit_curve_cmd(const struct fit_args *A)
     if (c.res.st != MDR_OK) {
         json_str(&j, "status", fit_status_name(c.res.st));
         json_str(&j, "message", mdr_status_str(c.res.st));
+        if (c.res.st == MDR_E_DEGENERATE && !A->flat && A->method == MDR_FIT_FULL) {
+            /* the slope's price (docs/fitting.md): what the caller can do */
+            json_str(&j, "hint", "the baseline's slope is fitted too: give the whole free path of both "
+                                 "branches, or --flat-baseline where the slope is subtracted already");
+        }
         json_key(&j, "status_code");
         printf("%d", (int)c.res.st);
         json_str(&j, "method", A->method == MDR_FIT_FULL ? "full" : "two-point");

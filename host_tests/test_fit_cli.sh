@@ -66,6 +66,19 @@ else
 fi
 out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --flat-baseline) && ok || bad "flat fit exit: $out"
 near "$(key "$out" E)" 1e9 1e-7 && ok || bad "--flat-baseline on a flat curve: E: $out"
+# the slope's price: 2 % noise and 10 nm of free path in each branch (the
+# docs' curve before stop 40) do not determine E* with the slope fitted:
+# exit 1, MDR_E_DEGENERATE with a hint; with --flat-baseline an answer
+"$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv 0.05 --control machine --k-machine 0.2 --path -1e-8,2e-8,-3.5e-8 \
+    --steps-per-segment 750 --springs 1024 --arith f64 2>/dev/null |
+    awk -F, 'BEGIN { srand(7) } NR == 1 { print "z,F"; next }
+        { u = 0; for (k = 0; k < 12; k++) u += rand(); printf "%.17g,%.17g\n", $2 + 2e-6, $4 + 3e-10 + 1e-10 * (u - 6) }' \
+    > "$TMP/short.csv"
+out=$("$MDR" fit --curve "$TMP/short.csv" $TIP --k-machine 0.2 --approach)
+[ $? -eq 1 ] && [ "$(key "$out" status)" = '"MDR_E_DEGENERATE"' ] && echo "$out" | grep -q '"hint": "the baseline' &&
+    ok || bad "short free path, slope fitted: MDR_E_DEGENERATE with a hint: $out"
+out=$("$MDR" fit --curve "$TMP/short.csv" $TIP --k-machine 0.2 --approach --flat-baseline) &&
+    near "$(key "$out" E)" 1e9 0.3 && ok || bad "short free path, --flat-baseline: $out"
 # a pinned top: the same cycle with w_adv < w (the retract starts at the
 # approach's largest contact, held until the force meets the receding
 # branch): the fit leaves that part out (n_pinned) and recovers E* and w

@@ -170,7 +170,8 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
                                             1 if unpinned else 0, 1 if flat_baseline else 0, dptr(z),
                                             dptr(F), n, work, len(work), res, fail)
     if st != lib.MDR_OK:
-        raise _fit_error(st, z, F, fail[0] if fail[0] < n else None, method, arith)
+        raise _fit_error(st, z, F, fail[0] if fail[0] < n else None, method, arith,
+                         slope=method == "full" and not flat_baseline)
     out = {f: float(getattr(res, f)) for f in FIT_DOUBLES}
     if not res.n_approach:
         out["w_adv"] = out["w_adv_err"] = None
@@ -181,7 +182,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
                      _res=res)
 
 
-def _fit_error(st, z, F, i, method, arith):
+def _fit_error(st, z, F, i, method, arith, slope=False):
     """mdr.Error of a refused fit, naming the sample where there is one."""
     where = "fit(%d samples, method=%r, arith=%r)" % (z.size, method, arith)
     if st == lib.MDR_E_NONFINITE and i is None:
@@ -203,4 +204,7 @@ def _fit_error(st, z, F, i, method, arith):
         lib.MDR_E_ORDER: "the samples are not in time order: z rises to the end (no retract), or the "
         "approach is in contact a step below the retract's pull-off (a curve read backwards)",
     }
+    if slope:
+        hints[lib.MDR_E_DEGENERATE] = ("the baseline's slope is fitted too: give the whole free path of both "
+                                       "branches, or flat_baseline=True where the slope is subtracted already")
     return Error(st, where, hint=hints.get(st, ""))

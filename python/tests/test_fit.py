@@ -139,6 +139,20 @@ def test_tilted_baseline(cli, tmp_path, arith):
     assert flat.E_err < free.E_err and flat.w_err <= free.w_err
 
 
+def test_slope_degenerate_hint():
+    """The slope's price: 2 % noise and 10 nm of free path in each branch
+    (the noise drawn with seed 3) do not determine E* with the slope fitted:
+    MDR_E_DEGENERATE, its message naming what to do; flat_baseline=True
+    answers (within 5 errors)."""
+    c = mdr.Contact("paraboloid", E=1e9, w=0.05, R=20e-9)
+    z, F = engine_curve(c, path=(-1e-8, 2e-8, -3.5e-8), steps=750, z0=2e-6, Fb=3e-10)
+    F = F + 1e-10 * np.random.default_rng(3).standard_normal(len(F))
+    err = raises("MDR_E_DEGENERATE", z, F, "paraboloid", R=20e-9, k_machine=0.2, approach=True)
+    assert "flat_baseline=True" in str(err)
+    res = mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2, approach=True, flat_baseline=True)
+    assert abs(res.E - 1e9) <= 5 * res.E_err
+
+
 def jkr_retract(E, w, R, k, n=1200, z0=0.0, Fb=0.0):
     """The retract of a JKR paraboloid through a machine of stiffness k,
     from closed forms: d(a) = a^2/R - sqrt(2 pi w a/E*), F(a) = 4E* a^3/(3R)
