@@ -2581,8 +2581,9 @@ static void test_cover_fold(void **state)
                 out3 += d > 3;
                 worst_dev = d > worst_dev ? d : worst_dev;
                 if (!(d <= COVER_MAX)) {
-                    fail_msg("cover %d.%d (E* %.4g, w %.4g, R %.4g, k_m %.4g): E* %.9g +- %.2g (%.1f errors), w %.9g +- "
-                             "%.2g (%.1f errors)", pass, j, p.E, p.w, p.R, p.km, r.E, r.E_err, dE, r.w, r.w_err, dw);
+                    fail_msg("cover %d.%d (E* %.4g, w %.4g, R %.4g, k_m %.4g): E* %.9g +- %.2g (%.1f errors), "
+                             "w %.9g +- %.2g (%.1f errors)", pass, j, p.E, p.w, p.R, p.km, r.E, r.E_err, dE, r.w,
+                             r.w_err, dw);
                 }
             }
         }
