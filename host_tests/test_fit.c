@@ -2717,8 +2717,8 @@ int main(void)
         cmocka_unit_test(test_f32_offset),
         cmocka_unit_test(test_tilt),
         cmocka_unit_test(test_tilt_approach),
-        cmocka_unit_test(test_misfit_not_pinned),
 #endif
+        cmocka_unit_test(test_misfit_not_pinned),
         /* the fit's known, open defects (make test-fit-known, built with
          * -DMDR_FIT_KNOWN_DEFECTS; docs/fitting.md): none open */
         cmocka_unit_test(test_fit_sweep),
