@@ -106,9 +106,13 @@ typedef struct {
     float R_mu;       /**< the tip radius R used in mu [m] (see mdr_tabor_<type>()) */
     float w_adv;      /**< work of adhesion of the approach [J/m^2] (n_approach > 0) */
     float w_adv_err;  /**< its standard error [J/m^2] */
-    float F_slope;    /**< slope of the force baseline dF_b/dz [N/m] (0 with
-                           opts->flat and MDR_FIT_TWO_POINT) */
-    float F_slope_err; /**< its standard error [N/m] (0 where not fitted) */
+    float F_slope;    /**< slope of the force baseline dF_b/dz [N/m]: fitted;
+                           0 with opts->flat; MDR_FIT_TWO_POINT: the free
+                           part's least-squares slope (0 where that line does
+                           not reach the retract's top within two noise
+                           widths, or with opts->flat) */
+    float F_slope_err; /**< its standard error [N/m] (0 where it is 0 by the
+                           rules above) */
     uint32_t n;          /**< retract points used */
     uint32_t n_approach; /**< approach points used for w_adv (0: not fitted) */
     uint32_t n_pinned;   /**< samples at the top of the retract left out as its pinned

@@ -20,8 +20,8 @@ class FitResult:
 
     E [Pa], w [J/m^2], z0 [m] (base position of first touch at zero force),
     F_base [N] (force baseline at z0), F_slope [N/m] (the baseline's slope:
-    it is F_base + F_slope (z - z0); 0 with flat_baseline=True and for
-    two-point), E_err, w_err, z0_err, F_base_err, F_slope_err (one
+    it is F_base + F_slope (z - z0); 0 with flat_baseline=True; two-point:
+    the free part's own line's), E_err, w_err, z0_err, F_base_err, F_slope_err (one
     standard error each), mu (Tabor parameter), R_mu [m] (the tip radius in
     mu), z_e [m], regime ("JKR", "transition", "DMT"), rms [N] (residual),
     pull_off_F [N] (the model's pull-off force relative to the baseline,
