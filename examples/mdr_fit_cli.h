@@ -42,10 +42,12 @@
  * F_base_err F_slope F_slope_err mu R_mu z_e regime rms pull_off_F pull_off_z a_pull_off n
  * n_pinned method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
  * A fit that fails prints {"status": ..., "message": ...} (and "hint" for
- * MDR_E_DEGENERATE of the full fit with the slope fitted) and exits 1.
- * --map prints CSV curve,E,w,z0,F_base,mu,rms,status, one row per curve in
- * the input's order (status "ok" or the library's status name; the other
- * fields empty when the fit failed), a progress bar on stderr when stderr
+ * MDR_E_DEGENERATE of the full fit with the slope fitted, and for
+ * MDR_E_PINNED with --unpinned) and exits 1.
+ * --map prints CSV curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope
+ * (the last three appended at stop 40: the columns before keep their
+ * places), one row per curve in the input's order (status "ok" or the
+ * library's status name; the other fields empty when the fit failed), a progress bar on stderr when stderr
  * is a terminal; exit 0 when every curve was fitted, 1 when some failed.
  * Bad arguments or a bad file: exit 2, one line on stderr (file:line: why).
  */
@@ -523,6 +525,11 @@ static int fit_curve_cmd(const struct fit_args *A)
             /* the slope's price (docs/fitting.md): what the caller can do */
             json_str(&j, "hint", "the baseline's slope is fitted too: give the whole free path of both "
                                  "branches, or --flat-baseline where the slope is subtracted already");
+        } else if (c.res.st == MDR_E_PINNED && A->unpinned) {
+            /* the message's "state unpinned" is done: what is left */
+            json_str(&j, "hint", "with --unpinned: a line to the pull-off explains the retract better than a "
+                                 "receding branch (a contact pinned until it ruptures, or a branch straight "
+                                 "within the noise)");
         }
         json_key(&j, "status_code");
         printf("%d", (int)c.res.st);
@@ -824,11 +831,14 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
 
 static void fit_map_row(const fit_curve *c, int f64)
 {
-    const char *fmt = f64 ? "%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,ok\n" : "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,ok\n";
+    /* the columns of stop 39, then (stop 40, appended) E_err, w_err, F_slope */
+    const char *fmt = f64 ? "%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,ok,%.17g,%.17g,%.17g\n"
+                          : "%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,ok,%.9g,%.9g,%.9g\n";
     if (c->res.st == MDR_OK) {
-        printf(fmt, c->label, c->res.E, c->res.w, c->res.z0, c->res.F_base, c->res.mu, c->res.rms);
+        printf(fmt, c->label, c->res.E, c->res.w, c->res.z0, c->res.F_base, c->res.mu, c->res.rms, c->res.E_err,
+               c->res.w_err, c->res.F_slope);
     } else {
-        printf("%s,,,,,,,%s\n", c->label, fit_status_name(c->res.st));
+        printf("%s,,,,,,,%s,,,\n", c->label, fit_status_name(c->res.st));
     }
 }
 
@@ -904,7 +914,7 @@ static int fit_map_cmd(const struct fit_args *A)
     if (nth == 0) {
         rc = usage_error("cannot start a thread", NULL);
     }
-    printf("curve,E,w,z0,F_base,mu,rms,status\n");
+    printf("curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope\n");
     n[0] = rc == 0 ? fit_read_chunk(&r, &seen, &pd, buf[0], chunk) : 0;
     rc = n[0] < 0 ? 2 : rc;
     while (rc == 0 && n[cur] > 0) {

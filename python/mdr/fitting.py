@@ -171,7 +171,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
                                             dptr(F), n, work, len(work), res, fail)
     if st != lib.MDR_OK:
         raise _fit_error(st, z, F, fail[0] if fail[0] < n else None, method, arith,
-                         slope=method == "full" and not flat_baseline)
+                         slope=method == "full" and not flat_baseline, unpinned=bool(unpinned))
     out = {f: float(getattr(res, f)) for f in FIT_DOUBLES}
     if not res.n_approach:
         out["w_adv"] = out["w_adv_err"] = None
@@ -182,7 +182,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
                      _res=res)
 
 
-def _fit_error(st, z, F, i, method, arith, slope=False):
+def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False):
     """mdr.Error of a refused fit, naming the sample where there is one."""
     where = "fit(%d samples, method=%r, arith=%r)" % (z.size, method, arith)
     if st == lib.MDR_E_NONFINITE and i is None:
@@ -207,4 +207,8 @@ def _fit_error(st, z, F, i, method, arith, slope=False):
     if slope:
         hints[lib.MDR_E_DEGENERATE] = ("the baseline's slope is fitted too: give the whole free path of both "
                                        "branches, or flat_baseline=True where the slope is subtracted already")
+    if unpinned:
+        hints[lib.MDR_E_PINNED] = ("with unpinned=True: a line to the pull-off explains the retract better than a "
+                                   "receding branch (a contact pinned until it ruptures, or a branch straight "
+                                   "within the noise)")
     return Error(st, where, hint=hints.get(st, ""))
