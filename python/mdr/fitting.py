@@ -73,6 +73,7 @@ class FitResult:
     def __repr__(self):
         s = "<mdr.FitResult %s %s: E = %.6g +- %.2g Pa, w = %.6g +- %.2g J/m^2, z0 = %.9g m, F_base = %.6g N" % (
             self.method, self.arith, self.E, self.E_err, self.w, self.w_err, self.z0, self.F_base)
+        s += ", F_slope = %.4g N/m" % self.F_slope
         if self.n_approach:
             s += ", w_adv = %.6g J/m^2" % self.w_adv
         return s + ", mu = %.3g (%s), %d points>" % (self.mu, self.regime, self.n)
