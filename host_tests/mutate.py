@@ -56,6 +56,7 @@ SUITES = [
     ("test_critical", ["host_tests/test_critical.c"], [], ["-lcmocka", "-lm"], [], 60),
     ("test_fit", ["host_tests/test_fit.c"], [], ["-lcmocka", "-lm"], [], 120),
     ("cli", ["examples/mdr_cli.c"], [], ["-lm"], [], 60),
+    ("fit_cli", ["examples/mdr_cli.c"], [], ["-lm", "-pthread"], [], 120),
     ("test_engine_ref", ["host_tests/test_engine_ref.c"], ["ref"], ["-lcmocka"] + GSL, [], 90),
     ("test_q31", ["host_tests/test_q31.c"], ["ref"], ["-lcmocka"] + GSL, [], 120),
     ("stress", ["host_tests/stress.c"], [], ["-lm"], ["short"], 120),
@@ -76,7 +77,7 @@ FIRST = {
     "q31": ["q31_trace", "test_step", "test_q31"],
     "scene": ["test_scene", "test_step"],
     "status": ["test_unit", "cli"],
-    "fit": ["test_fit"],
+    "fit": ["test_fit", "fit_cli"],
 }
 
 
@@ -277,9 +278,9 @@ def mutant(e, keep):
             return (e["id"], "error", "cannot link %s: %s" % (name, r.stdout.decode()[:200]),
                     time.time() - t0)
         try:
-            if name == "cli":
-                r = run(["bash", os.path.join(ROOT, "host_tests/test_cli.sh"), exe], cwd=ROOT,
-                        timeout=limit)
+            if name in ("cli", "fit_cli"):
+                script = "host_tests/test_cli.sh" if name == "cli" else "host_tests/test_fit_cli.sh"
+                r = run(["bash", os.path.join(ROOT, script), exe], cwd=ROOT, timeout=limit)
                 failed = r.returncode != 0
             elif name == "q31_trace":
                 r = run([exe], timeout=limit)
