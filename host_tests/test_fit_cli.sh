@@ -81,6 +81,15 @@ out=$("$MDR" fit --curve "$TMP/drift.csv" $TIP --k-machine 0.2 --approach) && ok
 awk -v E="$(key "$out" E)" -v e="$(key "$out" E_err)" -v w="$(key "$out" w)" -v we="$(key "$out" w_err)" \
     'BEGIN { exit !((E - 1e9 < 5 * e && 1e9 - E < 5 * e) && (w - 0.05 < 5 * we && 0.05 - w < 5 * we)) }' &&
     ok || bad "drift: E*, w within 5 errors: $out"
+# a tilt over a long free tail (a helper's curve, stop 40: 580 nm, 0.01
+# N/m, noise-free) put the force minimum at the tail's end, and the fit
+# answered MDR_E_NOPULLOFF; now the jump is found on the force less the
+# tail's line: E*, w and F_slope to 1e-7
+"$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv 0.05 --control machine --k-machine 0.2 --path -6e-8,2e-8,-6e-7 \
+    --steps-per-segment 4000 --springs 1024 --arith f64 2>/dev/null |
+    awk -F, 'NR == 1 { print "z,F"; next } { printf "%.17g,%.17g\n", $2, $4 + 0.01 * $2 }' > "$TMP/longtail.csv"
+out=$("$MDR" fit --curve "$TMP/longtail.csv" $TIP --k-machine 0.2 --approach) && near "$(key "$out" E)" 1e9 1e-7 &&
+    near "$(key "$out" w)" 0.05 1e-7 && near "$(key "$out" F_slope)" 0.01 1e-7 && ok || bad "long tilted tail: $out"
 # the slope's price: 2 % noise and 10 nm of free path in each branch (the
 # docs' curve before stop 40) do not determine E* with the slope fitted:
 # exit 1, MDR_E_DEGENERATE with a hint; with --flat-baseline an answer
