@@ -90,6 +90,14 @@ awk -v E="$(key "$out" E)" -v e="$(key "$out" E_err)" -v w="$(key "$out" w)" -v 
     awk -F, 'NR == 1 { print "z,F"; next } { printf "%.17g,%.17g\n", $2, $4 + 0.01 * $2 }' > "$TMP/longtail.csv"
 out=$("$MDR" fit --curve "$TMP/longtail.csv" $TIP --k-machine 0.2 --approach) && near "$(key "$out" E)" 1e9 1e-7 &&
     near "$(key "$out" w)" 0.05 1e-7 && near "$(key "$out" F_slope)" 0.01 1e-7 && ok || bad "long tilted tail: $out"
+# a tilt on a short tail (a helper's curve, stop 40: 4 nm past the pull-off,
+# 0.01 N/m, noise-free): the tail's step per sample was all of sigma, its
+# line not used, and the fit answered MDR_E_DEGENERATE; now E* and w to 1e-7
+"$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv 0.05 --control machine --k-machine 0.2 --path -6e-8,2e-8,-2.8e-8 \
+    --steps-per-segment 2000 --springs 1024 --arith f64 2>/dev/null |
+    awk -F, 'NR == 1 { print "z,F"; next } { printf "%.17g,%.17g\n", $2, $4 + 0.01 * $2 }' > "$TMP/shorttail.csv"
+out=$("$MDR" fit --curve "$TMP/shorttail.csv" $TIP --k-machine 0.2 --approach) && near "$(key "$out" E)" 1e9 1e-7 &&
+    near "$(key "$out" w)" 0.05 1e-7 && ok || bad "short tilted tail: $out"
 # the slope's price: 2 % noise and 10 nm of free path in each branch (the
 # docs' curve before stop 40) do not determine E* with the slope fitted:
 # exit 1, MDR_E_DEGENERATE with a hint; with --flat-baseline an answer
