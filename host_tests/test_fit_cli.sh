@@ -27,6 +27,12 @@ cycle() { # cycle FILE E W K Z0 FB [label]
              { printf "%s%.17g,%.17g\n", (lab == "" ? "" : lab ","), $2 + z0, $4 + fb }' > "$1"
 }
 cycle "$TMP/c.csv" 1e9 0.05 0.2 1e-6 2e-10
+# Gaussian noise of SIGMA [N] (default 4.7e-11, 1 % of the pull-off force)
+# on F: an LCG and Box-Muller, the same in every awk
+noisy() { # noisy IN OUT [SEED [SIGMA]]
+    awk -F, -v s0="${3:-12345}" -v sg="${4:-4.7e-11}" 'BEGIN { s = s0 } function u() { s = (s * 1103515245 + 12345) % 2147483648; return (s + 0.5) / 2147483648 }
+        { printf "%.17g,%.17g\n", $1, $2 + sg * sqrt(-2 * log(u())) * cos(6.283185307179586 * u()) }' "$1" > "$2"
+}
 
 for arith in f64 f32; do
     tol=1e-7
@@ -68,9 +74,8 @@ out=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --flat-baseline) && o
 near "$(key "$out" E)" 1e9 1e-7 && ok || bad "--flat-baseline on a flat curve: E: $out"
 # drag (a helper's finding, stop 40): the approach's baseline off the
 # retract's by a constant (hydrodynamic drag pushes the two branches apart),
-# w_adv = w = 0.05, noise 0.3 % (an LCG and Box-Muller, the same in every
-# awk), 60 nm of free path. With the approach's baseline held at the
-# retract's, 0.2 % of the pull-off force (9.4 pN) pulled w_adv 13 of its
+# w_adv = w = 0.05, noise 0.3 % (noisy), 60 nm of free path. With the
+# approach's baseline held at the retract's, 0.2 % of the pull-off force (9.4 pN) pulled w_adv 13 of its
 # errors low (30 seeds: mean -12.9, worst 15.0; status ok with --unpinned,
 # MDR_E_PINNED without), 1 % drag 26. Now the approach fit has its own
 # baseline offset where its free part (8 samples or more) lies off the
@@ -84,9 +89,8 @@ near "$(key "$out" E)" 1e9 1e-7 && ok || bad "--flat-baseline on a flat curve: E
     awk -F, 'NR > 1 { printf "%.17g,%.17g\n", $2, $4 }' > "$TMP/d0.csv"
 for drag in 9.4e-12 -4.7e-11 -9.4e-11; do
     for seed in 1 2 3; do
-        awk -F, -v s="$seed" -v dr="$drag" 'function u() { s = (s * 1103515245 + 12345) % 2147483648; return (s + 0.5) / 2147483648 }
-            { printf "%.17g,%.17g\n", $1, $2 + (NR <= 2001 ? dr : 0) + 1.41e-11 * sqrt(-2 * log(u())) * cos(6.283185307179586 * u()) }' \
-            "$TMP/d0.csv" > "$TMP/dg.csv"
+        awk -F, -v dr="$drag" '{ printf "%.17g,%.17g\n", $1, $2 + (NR <= 2001 ? dr : 0) }' "$TMP/d0.csv" > "$TMP/dd.csv"
+        noisy "$TMP/dd.csv" "$TMP/dg.csv" "$seed" 1.41e-11
         for opt in --unpinned ""; do
             out=$("$MDR" fit --curve "$TMP/dg.csv" $TIP --k-machine 0.2 --approach $opt) &&
                 awk -v a="$(key "$out" w_adv)" -v e="$(key "$out" w_adv_err)" 'BEGIN { exit !((a - 0.05) ^ 2 <= 16 * e ^ 2) }' &&
@@ -170,16 +174,11 @@ rout=$("$MDR" fit --curve "$TMP/r.csv" $TIP --k-machine 0.2 --unpinned)
 [ $? -eq 1 ] && [ "$(key "$rout" status)" = '"MDR_E_PINNED"' ] && echo "$rout" | grep -q '"hint": "with --unpinned' &&
     ok || bad "pinned to the rupture, --unpinned: hint: $rout"
 # a pinned top the noise hides: through the 0.2 N/m lever with Gaussian noise
-# of 1 % of the pull-off force (4.7e-11 N; an LCG and Box-Muller, the same in
-# every awk) the whole retract is straight within its noise, and the receding
-# branch with E* 33-46 % high meets the samples of the w_adv = w/2 cycle as
-# well as the truth (docs/fitting.md): refused unless the approach or the
+# of 1 % of the pull-off force (4.7e-11 N; noisy) the whole retract is
+# straight within its noise, and the receding branch with E* 33-46 % high
+# meets the samples of the w_adv = w/2 cycle as well as the truth (docs/fitting.md): refused unless the approach or the
 # caller rules a pinned top out. The approach does for w_adv = w (its w_adv
 # within 6 errors of w), not for w_adv = w/2.
-noisy() { # noisy IN OUT [SEED]
-    awk -F, -v s0="${3:-12345}" 'BEGIN { s = s0 } function u() { s = (s * 1103515245 + 12345) % 2147483648; return (s + 0.5) / 2147483648 }
-        { printf "%.17g,%.17g\n", $1, $2 + 4.7e-11 * sqrt(-2 * log(u())) * cos(6.283185307179586 * u()) }' "$1" > "$2"
-}
 "$MDR" cycle $TIP --E 1e9 --w 0.05 --control machine --k-machine 0.2 --path -1e-8,2e-8,-4e-8 \
     --steps-per-segment 1000 --w-adv 0.05 --arith f64 --springs 1024 2>/dev/null |
     awk -F, 'NR > 1 { printf "%.17g,%.17g\n", $2, $4 }' > "$TMP/u.csv"
