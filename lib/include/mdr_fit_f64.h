@@ -105,7 +105,9 @@ typedef struct {
     double mu;         /**< Tabor parameter (R w^2/(E*^2 z_e^3))^(1/3) */
     double R_mu;       /**< the tip radius R used in mu [m] (see mdr_tabor_<type>()) */
     double w_adv;      /**< work of adhesion of the approach [J/m^2] (n_approach > 0) */
-    double w_adv_err;  /**< its standard error [J/m^2] */
+    double w_adv_err;  /**< its standard error [J/m^2], the error of the
+                           retract's answer the approach's fit holds (E*,
+                           z0, the baseline) included */
     double F_slope;    /**< slope of the force baseline dF_b/dz [N/m]: fitted;
                            0 with opts->flat; MDR_FIT_TWO_POINT: the free
                            part's least-squares slope (0 where that line does

@@ -87,7 +87,9 @@ typedef struct {
     MDR_T mu;         /**< Tabor parameter (R w^2/(E*^2 z_e^3))^(1/3) */
     MDR_T R_mu;       /**< the tip radius R used in mu [m] (see mdr_tabor_<type>()) */
     MDR_T w_adv;      /**< work of adhesion of the approach [J/m^2] (n_approach > 0) */
-    MDR_T w_adv_err;  /**< its standard error [J/m^2] */
+    MDR_T w_adv_err;  /**< its standard error [J/m^2], the error of the
+                           retract's answer the approach's fit holds (E*,
+                           z0, the baseline) included */
     MDR_T F_slope;    /**< slope of the force baseline dF_b/dz [N/m]: fitted;
                            0 with opts->flat; MDR_FIT_TWO_POINT: the free
                            part's least-squares slope (0 where that line does
