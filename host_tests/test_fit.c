@@ -704,7 +704,10 @@ static void test_two_point(void **state)
  * 2.5; with 16 the step's shape a sqrt(theta) + b theta is rough, measured
  * 4.9), with noise and 40 samples or more at most COVER_FRAC beyond 3 (with
  * 16, 3 of 16 answers beyond 3, the worst 4.3); the others refused
- * (MDR_E_DEGENERATE: E* not determined by the two measurements). Before:
+ * (MDR_E_DEGENERATE: E* not determined by the two measurements;
+ * MDR_E_PINNED: the retract straight within its noise, or f32's rounding,
+ * past its zero-force point, where a pinned top would not show: 0 to 4 of
+ * 40 per row noise-free and at 0.1 %, 3 to 13 at 1 %, soft levers). Before:
  * the errors were a least-squares fit's at the method's answer, without
  * the step: noise-free, 383 of 600 answers of 300 samples beyond 3 errors,
  * up to 17 (31 with 1 000 samples); with noise up to 200. */
@@ -729,7 +732,7 @@ static void test_two_point_errors(void **state)
             for (s = 0; s < NTP_SIZES; s++) {
                 const int n = sizes[s];
                 const double lim = ni == 0 && n >= 40 ? TP_COVER : COVER_MAX;
-                int ok = 0, out3 = 0;
+                int ok = 0, out3 = 0, pinned = 0;
                 double worst_dev = 0;
                 for (j = 0; j < NTPCOV; j++) {
                     jkr_par p;
@@ -765,9 +768,10 @@ static void test_two_point_errors(void **state)
                     }
                     if (st != MDR_OK) {
                         if (!(st == MDR_E_DEGENERATE || st == MDR_E_NOCONV || st == MDR_E_FEW ||
-                              st == MDR_E_NOPULLOFF || st == MDR_E_NOCONTACT)) {
+                              st == MDR_E_NOPULLOFF || st == MDR_E_NOCONTACT || st == MDR_E_PINNED)) {
                             fail_msg("two-point %d: status %d (%s)", j, st, mdr_status_str(st));
                         }
+                        pinned += st == MDR_E_PINNED;
                         continue;
                     }
                     dE = nerr(E, p.E, Ee);
@@ -782,8 +786,9 @@ static void test_two_point_errors(void **state)
                                  j, p.E, p.w, p.R, p.km, E, Ee, dE, w, we, dw);
                     }
                 }
-                print_message("two-point errors, noise %g, %s, %4d samples: %d answers of %d, %d beyond 3 errors, "
-                              "worst %.2f\n", noises[ni], f32 ? "f32" : "f64", n, ok, NTPCOV, out3, worst_dev);
+                print_message("two-point errors, noise %g, %s, %4d samples: %d answers of %d (%d MDR_E_PINNED), %d "
+                              "beyond 3 errors, worst %.2f\n",
+                              noises[ni], f32 ? "f32" : "f64", n, ok, NTPCOV, pinned, out3, worst_dev);
                 if (ni > 0) {
                     assert_true(out3 <= (int)ceil(COVER_FRAC * ok));
                 }

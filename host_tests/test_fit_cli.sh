@@ -149,9 +149,14 @@ awk -F, '{ printf "%.17g,%.17g\n", $1, $2 + 0.01 * 4.712e-9 * (NR - 1) / 4000 }'
 for run in "h0.csv:full:0.75" "hd.csv:full:0.75" "h0.csv:two-point:0.6"; do
     f=${run%%:*} m=${run#*:} lo=${run##*:}
     m=${m%%:*}
+    # (two-point: --unpinned, the curve's truth; without, its noisy straight
+    # retract is refused where the approach's w_adv is not within 6 errors
+    # of w: 8 of these 60)
+    u=
+    [ "$m" = two-point ] && u=--unpinned
     for seed in $(seq 1 60); do
         pmnoisy "$TMP/$f" "$TMP/hn.csv" "$seed" 1.41e-11
-        "$MDR" fit --curve "$TMP/hn.csv" $TIP --k-machine 0.2 --approach --method "$m" 2>/dev/null
+        "$MDR" fit --curve "$TMP/hn.csv" $TIP --k-machine 0.2 --approach --method "$m" $u 2>/dev/null
         echo
     done > "$TMP/hp.jsonl"
     # (one Python for the 60 answers: a key() per answer cost 9 s of the suite)
@@ -252,6 +257,48 @@ done
 hout=$("$MDR" fit --curve "$TMP/un.csv" $TIP --k-machine 0.2 --unpinned) &&
     awk -v e="$(key "$hout" E)" -v s="$(key "$hout" E_err)" 'BEGIN { d = e - 1e9; exit !(d * d <= 25 * s * s) }' &&
     echo "$hout" | grep -q '"unpinned": true' && ok || bad "noisy w_adv = w with --unpinned: $hout"
+# the two-point method on a pinned top: its zero-force point on the pinned
+# line (w_adv = w/4 through 0.2 N/m: the contact pinned to below F = 0) is
+# no point of the receding branch; answered E* 1.47 x the truth (10 of its
+# errors), status ok, before. Refused, MDR_E_PINNED, where the retract is
+# straight from its top past that point, unless --unpinned (the caller's
+# word: then answered as before); answered where the pinned part ends
+# above F = 0 (2 N/m, w_adv = w/4: the same answer as w_adv = w) and where
+# the branch is curved (w_adv = w, noise-free). Noisy (0.3 %, Park-Miller),
+# w_adv = w/2 with --approach stays refused (the approach's w_adv far from
+# w); w_adv = w with --approach answered for most draws.
+for km in 0.2 2; do
+    for wadv in 0.05 0.0125; do
+        "$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv $wadv --control machine --k-machine $km --path -6e-8,2e-8,-6e-8 \
+            --steps-per-segment 2000 --springs 1024 --arith f64 2>/dev/null |
+            awk -F, 'NR > 1 { printf "%.17g,%.17g\n", $2, $4 }' > "$TMP/tp_${km}_$wadv.csv"
+    done
+done
+tout=$("$MDR" fit --curve "$TMP/tp_0.2_0.0125.csv" $TIP --k-machine 0.2 --method two-point)
+[ $? -eq 1 ] && [ "$(key "$tout" status)" = '"MDR_E_PINNED"' ] && ok || bad "two-point on a pinned top refused: $tout"
+tout=$("$MDR" fit --curve "$TMP/tp_0.2_0.0125.csv" $TIP --k-machine 0.2 --method two-point --unpinned) &&
+    awk -v e="$(key "$tout" E)" 'BEGIN { exit !(e > 1.4e9) }' && ok || bad "two-point, pinned top, --unpinned: $tout"
+tout=$("$MDR" fit --curve "$TMP/tp_0.2_0.05.csv" $TIP --k-machine 0.2 --method two-point) &&
+    awk -v e="$(key "$tout" E)" -v s="$(key "$tout" E_err)" 'BEGIN { d = e - 1e9; exit !(d * d <= 9 * s * s) }' &&
+    ok || bad "two-point, w_adv = w, 0.2 N/m: $tout"
+ta=$("$MDR" fit --curve "$TMP/tp_2_0.0125.csv" $TIP --k-machine 2 --method two-point) &&
+    tb=$("$MDR" fit --curve "$TMP/tp_2_0.05.csv" $TIP --k-machine 2 --method two-point) &&
+    [ "$(key "$ta" E)" = "$(key "$tb" E)" ] && ok || bad "two-point, pinned part above F = 0: $ta; w_adv = w: $tb"
+for f in 0.05 0.025; do
+    "$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv $f --control machine --k-machine 0.2 --path -6e-8,2e-8,-6e-8 \
+        --steps-per-segment 2000 --springs 1024 --arith f64 2>/dev/null |
+        awk -F, 'NR > 1 { printf "%.17g,%.17g\n", $2, $4 }' > "$TMP/tq.csv"
+    n=0
+    for seed in 1 2 3 4 5 6 7 8; do
+        pmnoisy "$TMP/tq.csv" "$TMP/tqn.csv" "$seed" 1.41e-11
+        "$MDR" fit --curve "$TMP/tqn.csv" $TIP --k-machine 0.2 --method two-point --approach >/dev/null 2>&1 && n=$((n + 1))
+    done
+    if [ $f = 0.05 ]; then
+        [ $n -ge 5 ] && ok || bad "two-point, noisy w_adv = w, --approach: $n of 8 answered"
+    else
+        [ $n -eq 0 ] && ok || bad "two-point, noisy pinned top (w_adv = w/2), --approach: $n of 8 answered"
+    fi
+done
 # rows written twice (a merge, an export repeating its rows; a helper's
 # curves, stop 40): the same answer as the rows once. Before, a repeated
 # row's zero difference counted as noise (sigma halved: MDR_E_MISFIT or

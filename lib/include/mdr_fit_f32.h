@@ -72,7 +72,8 @@ typedef struct {
                            receding branch instead of refused as one a pinned
                            top could hide in (MDR_E_PINNED; a line that
                            explains it better than the branch is still
-                           refused); default 0 */
+                           refused); MDR_FIT_TWO_POINT: a retract straight
+                           past its zero-force point is answered; default 0 */
     uint8_t flat;     /**< 1: the caller knows the force baseline is flat (its
                            slope subtracted): F_slope held at 0, one parameter
                            fewer; default 0: the baseline F_base + F_slope
@@ -210,13 +211,15 @@ void mdr_fit_defaults_f32(mdr_fit_opts_f32 *o, float k_m);
  *   contact sample, where the model holds it free: drift, a glitch,
  *   correlated noise, or a curve reversed; docs/fitting.md),
  *   MDR_E_JUMPS (the retract jumps before the pull-off),
- *   MDR_E_PINNED (the full fit only: the retract straight to its pull-off
+ *   MDR_E_PINNED (the full fit: the retract straight to its pull-off
  *   and a line explains it better than the receding branch: a contact
  *   pinned until it ruptures; or, in noisy data, straight within its noise
  *   to the pull-off, where a pinned top could hide, and neither
  *   opts->unpinned nor the approach (opts->approach: w_adv within
  *   MDR_FIT_NOISE_SIGMAS reported errors of w) rules it out;
- *   docs/fitting.md),
+ *   MDR_FIT_TWO_POINT: the retract straight within its noise from its top
+ *   to past its zero-force point, which a pinned top would move, and
+ *   neither rules it out; docs/fitting.md),
  *   MDR_E_RADIUS (the indentation needs a contact beyond the profile's
  *   domain, e.g. a >= R of the sphere), MDR_E_NOCONV, MDR_E_OVERFLOW (from
  *   the contact module).
