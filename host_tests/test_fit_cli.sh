@@ -204,6 +204,23 @@ print("drift %s: %d of 8 answered, worst w_adv pull %.2f" % (sys.argv[2], len(p)
 sys.exit(0 if len(p) >= 5 and all(abs(x) <= 4 for x in p) else 1)' "$TMP/hp.jsonl" "$d" &&
         ok || bad "drift $d: w_adv within 4 errors, 5 or more of 8 answered"
 done
+# a nonlinear approach baseline: a half sine of 1 % of the pull-off force
+# over z in [-60, -5] nm of the approach (zero at its ends, so at contact),
+# noise 0.3 %: read as drag, its offset fitted and extrapolated to the
+# contact, w_adv was 6 errors off (30 draws: pulls' mean +6.2), status ok
+# (a helper's bump at stop 41: 20 to 23). Now the approach's free part
+# must be straight within its noise where it gets its own baseline:
+# refused, MDR_E_MISFIT, in 8 of 8 draws (30 of 30: 29, one
+# MDR_E_DEGENERATE as without the bump)
+awk -F, 'NR <= 2000 && $1 < -5e-9 { $2 = $2 + 4.712e-11 * sin(3.141592653589793 * ($1 + 6e-8) / 5.5e-8) }
+    { printf "%.17g,%.17g\n", $1, $2 }' "$TMP/h0.csv" > "$TMP/hb.csv"
+n=0
+for seed in 1 2 3 4 5 6 7 8; do
+    pmnoisy "$TMP/hb.csv" "$TMP/hn.csv" "$seed" 1.41e-11
+    bout=$("$MDR" fit --curve "$TMP/hn.csv" $TIP --k-machine 0.2 --approach 2>/dev/null)
+    [ "$(key "$bout" status)" = '"MDR_E_MISFIT"' ] && n=$((n + 1))
+done
+[ $n -eq 8 ] && ok || bad "approach bump of 1 %: $n of 8 refused MDR_E_MISFIT"
 # a tilt over a long free tail (a helper's curve, stop 40: 580 nm, 0.01
 # N/m, noise-free) put the force minimum at the tail's end, and the fit
 # answered MDR_E_NOPULLOFF; now the jump is found on the force less the
