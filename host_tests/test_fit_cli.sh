@@ -230,6 +230,17 @@ done
     awk -F, 'NR == 1 { print "z,F"; next } { printf "%.17g,%.17g\n", $2, $4 + 0.01 * $2 }' > "$TMP/longtail.csv"
 out=$("$MDR" fit --curve "$TMP/longtail.csv" $TIP --k-machine 0.2 --approach) && near "$(key "$out" E)" 1e9 1e-7 &&
     near "$(key "$out" w)" 0.05 1e-7 && near "$(key "$out" F_slope)" 0.01 1e-7 && ok || bad "long tilted tail: $out"
+# the approach's straightness test (bump, above) on a long noise-free free
+# part: 580 nm each way, tilt 0.01 N/m, drift 1 % of the pull-off force
+# over the cycle (the approach gets its own slope): the curvature's sum
+# taken on the samples' forces, not their residuals about the line, kept
+# the line's part in its rounding (sum q F, sum q u are 0 only in exact
+# arithmetic) and refused the curve, MDR_E_MISFIT; E* and w_adv to 1e-7
+"$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv 0.05 --control machine --k-machine 0.2 --path -6e-7,2e-8,-6e-7 \
+    --steps-per-segment 8000 --springs 1024 --arith f64 2>/dev/null |
+    awk -F, 'NR == 1 { print "z,F"; next } { printf "%.17g,%.17g\n", $2, $4 + 0.01 * $2 + 0.01 * 4.712e-9 * (NR - 2) / 16000 }' > "$TMP/longdrift.csv"
+out=$("$MDR" fit --curve "$TMP/longdrift.csv" $TIP --k-machine 0.2 --approach) && near "$(key "$out" E)" 1e9 1e-7 &&
+    near "$(key "$out" w_adv)" 0.05 1e-7 && ok || bad "long tilted drifting curve: $out"
 # a tilt on a short tail (a helper's curve, stop 40: 4 nm past the pull-off,
 # 0.01 N/m, noise-free): the tail's step per sample was all of sigma, its
 # line not used, and the fit answered MDR_E_DEGENERATE; now E* and w to 1e-7
