@@ -209,7 +209,10 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   approach passed in reversed time order; either method: the approach
  *   leaving the baseline a sampling step or more below the retract's last
  *   contact sample, where the model holds it free: drift, a glitch,
- *   correlated noise, or a curve reversed; docs/fitting.md),
+ *   correlated noise, or a curve reversed; opts->approach: the approach's
+ *   free part curved beyond its noise where it gets its own baseline
+ *   (an offset off the free tail's, or a slope that disagrees with it): a
+ *   baseline the model's line does not describe; docs/fitting.md),
  *   MDR_E_JUMPS (the retract jumps before the pull-off),
  *   MDR_E_PINNED (the full fit: the retract straight to its pull-off
  *   and a line explains it better than the receding branch: a contact
