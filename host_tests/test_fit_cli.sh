@@ -142,6 +142,28 @@ pmnoisy() { # pmnoisy IN OUT SEED SIGMA
         BEGIN { s = (s0 * 104729 + 12345) % 2147483647; for (i = 0; i < 10; i++) u() }
         { printf "%.17g,%.17g\n", $1, $2 + sg * sqrt(-2 * log(u())) * cos(6.283185307179586 * u()) }' "$1" > "$2"
 }
+# draws CURVE N [OPTS]: N Park-Miller draws of noise 0.3 % (1.41e-11 N) on
+# CURVE fitted with --approach (and OPTS), the answers' w_adv pulls
+# (w_adv - 0.05)/w_adv_err, one a line (one Python for the N answers: a
+# key() per answer cost 9 s of the suite)
+draws() {
+    local c=$1 n=$2 seed
+    shift 2
+    for seed in $(seq 1 "$n"); do
+        pmnoisy "$c" "$TMP/hn.csv" "$seed" 1.41e-11
+        "$MDR" fit --curve "$TMP/hn.csv" $TIP --k-machine 0.2 --approach "$@" 2>/dev/null
+        echo
+    done > "$TMP/hp.jsonl"
+    /usr/bin/python3 -c '
+import json, sys
+for line in open(sys.argv[1]):
+    try:
+        j = json.loads(line)
+    except ValueError:
+        continue
+    if j.get("status") == "ok":
+        print((j["w_adv"] - 0.05) / j["w_adv_err"])' "$TMP/hp.jsonl"
+}
 "$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv 0.05 --control machine --k-machine 0.2 --path -6e-8,2e-8,-6e-8 \
     --steps-per-segment 2000 --springs 1024 --arith f64 2>/dev/null |
     awk -F, 'NR > 1 { printf "%.17g,%.17g\n", $2, $4 }' > "$TMP/h0.csv"
@@ -154,25 +176,9 @@ for run in "h0.csv:full:0.75" "hd.csv:full:0.75" "h0.csv:two-point:0.6"; do
     # of w: 8 of these 60)
     u=
     [ "$m" = two-point ] && u=--unpinned
-    for seed in $(seq 1 60); do
-        pmnoisy "$TMP/$f" "$TMP/hn.csv" "$seed" 1.41e-11
-        "$MDR" fit --curve "$TMP/hn.csv" $TIP --k-machine 0.2 --approach --method "$m" $u 2>/dev/null
-        echo
-    done > "$TMP/hp.jsonl"
-    # (one Python for the 60 answers: a key() per answer cost 9 s of the suite)
-    /usr/bin/python3 -c '
-import json, math, sys
-p = []
-for line in open(sys.argv[1]):
-    try:
-        j = json.loads(line)
-    except ValueError:
-        continue
-    if j.get("status") == "ok":
-        p.append((j["w_adv"] - 0.05) / j["w_adv_err"])
-r = math.sqrt(sum(x * x for x in p) / len(p)) if p else 0.0
-print("w_adv pulls (%s): %d of 60 answered, rms %.2f" % (sys.argv[2], len(p), r))
-sys.exit(0 if len(p) >= 55 and float(sys.argv[3]) <= r <= 1.25 else 1)' "$TMP/hp.jsonl" "$f $m" "$lo" &&
+    draws "$TMP/$f" 60 --method "$m" $u | awk -v lo="$lo" -v tag="$f $m" '{ n++; s += $1 * $1 }
+        END { r = n ? sqrt(s / n) : 0; printf "w_adv pulls (%s): %d of 60 answered, rms %.2f\n", tag, n, r
+              exit !(n >= 55 && r >= lo && r <= 1.25) }' &&
         ok || bad "w_adv's error over 60 draws ($f, $m): 55 answers or more, pulls' rms in [$lo, 1.25]"
 done
 # drift of -2 % and +3 % of the pull-off force over the cycle (noise 0.3 %,
@@ -185,23 +191,8 @@ done
 # draws: pulls' rms 0.97 and 0.91), 5 or more of 8 answered
 for d in -0.02 0.03; do
     awk -F, -v d=$d '{ printf "%.17g,%.17g\n", $1, $2 + d * 4.712e-9 * (NR - 1) / 4000 }' "$TMP/h0.csv" > "$TMP/hdd.csv"
-    for seed in 1 2 3 4 5 6 7 8; do
-        pmnoisy "$TMP/hdd.csv" "$TMP/hn.csv" "$seed" 1.41e-11
-        "$MDR" fit --curve "$TMP/hn.csv" $TIP --k-machine 0.2 --approach 2>/dev/null
-        echo
-    done > "$TMP/hp.jsonl"
-    /usr/bin/python3 -c '
-import json, sys
-p = []
-for line in open(sys.argv[1]):
-    try:
-        j = json.loads(line)
-    except ValueError:
-        continue
-    if j.get("status") == "ok":
-        p.append((j["w_adv"] - 0.05) / j["w_adv_err"])
-print("drift %s: %d of 8 answered, worst w_adv pull %.2f" % (sys.argv[2], len(p), max([abs(x) for x in p] + [0])))
-sys.exit(0 if len(p) >= 5 and all(abs(x) <= 4 for x in p) else 1)' "$TMP/hp.jsonl" "$d" &&
+    draws "$TMP/hdd.csv" 8 | awk -v d="$d" '{ n++; a = $1 < 0 ? -$1 : $1; m = a > m ? a : m }
+        END { printf "drift %s: %d of 8 answered, worst w_adv pull %.2f\n", d, n, m; exit !(n >= 5 && m <= 4) }' &&
         ok || bad "drift $d: w_adv within 4 errors, 5 or more of 8 answered"
 done
 # a nonlinear approach baseline: a half sine of 1 % of the pull-off force
