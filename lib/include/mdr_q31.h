@@ -119,6 +119,7 @@ typedef struct {
  *  (internal; a cache of the engine's spring: mdr_table_int.inc) */
 typedef struct {
     int32_t xk, g0, G0, dg, bb;
+    int32_t h, b3; /* (dg + bb)/2, bb/3 */
     int64_t dgx, bx;
     uint16_t k;
 } mdr_spring_q31;
