@@ -121,6 +121,7 @@ typedef struct {
     int32_t xk, g0, G0, dg, bb;
     int32_t h, b3; /* (dg + bb)/2, bb/3 */
     int64_t dgx, bx;
+    int64_t g2; /* g'' = -2 n bx */
     uint16_t k;
 } mdr_spring_q31;
 
