@@ -203,8 +203,10 @@ static int trace(void)
         return 1;
     }
 #endif
-    printf("q31 trace: %016llx (%ld steps, %ld events, %ld refused)\n", (unsigned long long)h, steps,
-           events, refused);
+    /* the hash in two 32-bit halves: newlib-nano's printf (the Cortex-M0's)
+     * has no long long conversion */
+    printf("q31 trace: %08lx%08lx (%ld steps, %ld events, %ld refused)\n", (unsigned long)(h >> 32),
+           (unsigned long)(h & 0xFFFFFFFFu), steps, events, refused);
     return 0;
 }
 

@@ -45,7 +45,11 @@ static inline void mdr_cm_int(long long a, long long b, const char *file, int li
 {
     char msg[64];
     if (a != b) {
-        snprintf(msg, sizeof msg, "0x%llx != 0x%llx", (unsigned long long)a, (unsigned long long)b);
+        /* in 32-bit halves: newlib-nano's printf (the Cortex-M0's) has no
+         * long long conversion */
+        unsigned long long ua = (unsigned long long)a, ub = (unsigned long long)b;
+        snprintf(msg, sizeof msg, "0x%08lx%08lx != 0x%08lx%08lx", (unsigned long)(ua >> 32),
+                 (unsigned long)(ua & 0xFFFFFFFFu), (unsigned long)(ub >> 32), (unsigned long)(ub & 0xFFFFFFFFu));
         mdr_cm_fail(file, line, msg);
     }
 }

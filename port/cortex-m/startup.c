@@ -16,6 +16,13 @@
  * the bytes between them that nothing ever wrote. The stack figure counts
  * the 256 bytes below Reset's frame, which are not painted, as used, and
  * can miss only words a frame reserved but never wrote, at its deepest end.
+ * The board's stack reserve (_stack_size, which the linker checks against
+ * data + bss) is kept: Reset sets newlib's heap limit at its lower end, so
+ * a malloc that would enter it fails instead of handing out the stack's
+ * words, and a run whose painted stack went below it fails (exit status 4)
+ * even where every test passed: a stack that grew into the heap may have
+ * overwritten what the heap held (stop 45: the q31 step's -O2 build on the
+ * microbit corrupted printf's big-number freelist that way).
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -33,17 +40,23 @@ void mdr_fault_handler(void);
 #ifdef MDR_RAM_REPORT
 #define MDR_PAINT 0xA5A5A5A5u
 extern uint32_t mdr_ld_sram[], end[];
-/* newlib's system call (librdimon): the reserved name is the C library's own */
-extern void *_sbrk(ptrdiff_t incr); /* NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp) */
+/* the board script's stack reserve: an absolute symbol, its address is its value */
+extern char _stack_size[]; /* NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp) */
+/* newlib's system call and heap limit (librdimon, 0xcafedead: none): the
+ * reserved names are the C library's own */
+extern void *_sbrk(ptrdiff_t incr);   /* NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp) */
+extern char *__heap_limit;           /* NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp) */
 
 /* the top of the painted region (a little below Reset_Handler's frame) */
 static const uint32_t *mdr_paint_top;
 
-static void mdr_ram_report(void)
+/* the report; 0, or 4 where the stack went below its reserve */
+static int mdr_ram_report(void)
 {
     uintptr_t brk = ((uintptr_t)_sbrk(0) + 3u) & ~(uintptr_t)3u;
     const uint32_t *p = end + (brk - (uintptr_t)end) / sizeof(uint32_t);
     uintptr_t deepest, ram = (uintptr_t)mdr_ld_estack - (uintptr_t)mdr_ld_sram;
+    uintptr_t reserve = (uintptr_t)_stack_size;
     while (p < mdr_paint_top && *(const volatile uint32_t *)p == MDR_PAINT) {
         p++;
     }
@@ -51,6 +64,13 @@ static void mdr_ram_report(void)
     printf("target RAM %u B: data+bss %u, heap %u, stack %u (painted), never used %u\n", (unsigned)ram,
            (unsigned)((uintptr_t)end - (uintptr_t)mdr_ld_sram), (unsigned)(brk - (uintptr_t)end),
            (unsigned)((uintptr_t)mdr_ld_estack - deepest), (unsigned)(deepest - brk));
+    if ((uintptr_t)mdr_ld_estack - deepest > reserve) {
+        printf("target: the stack (%u B) overran its reserve (_stack_size %u B): raise it in the board script "
+               "or use less stack\n",
+               (unsigned)((uintptr_t)mdr_ld_estack - deepest), (unsigned)reserve);
+        return 4;
+    }
+    return 0;
 }
 #endif
 
@@ -68,6 +88,7 @@ void Reset_Handler(void)
         const uint32_t *sp;
         __asm__ volatile("mov %0, sp" : "=r"(sp));
         mdr_paint_top = sp - 64; /* 256 bytes below this frame */
+        __heap_limit = (char *)mdr_ld_estack - (uintptr_t)_stack_size;
         for (p = end; p < mdr_paint_top; p++) {
             *(volatile uint32_t *)p = MDR_PAINT;
         }
@@ -75,8 +96,8 @@ void Reset_Handler(void)
     initialise_monitor_handles();
     {
         int status = main();
-        mdr_ram_report();
-        mdr_sh_exit(status);
+        int ram = mdr_ram_report();
+        mdr_sh_exit(status != 0 ? status : ram);
     }
 #else
     initialise_monitor_handles();
