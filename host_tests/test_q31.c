@@ -78,6 +78,9 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, q31, the spring engine and every profile")
 #define SCENES_REF
 #endif
 #include "scenes.h"
+#ifndef MDR_TARGET_TEST
+#include "first_eq.h"
+#endif
 #include "test_util.h"
 
 #define TOL_LSB 8.0
@@ -734,6 +737,119 @@ static void saturation(void **st)
     assert_int_equal(q.flags, MDR_FLAG_SAT);
 }
 
+#ifndef MDR_TARGET_TEST
+/* The first equilibrium on the way on coarse tables (test_engine's
+ * first_equilibrium_coarse_tables, whose oracle this is: first_eq.h), for
+ * the q31 engine on q31 tables of 2, 4 and 8 springs made from the f64
+ * tables: spheres to 0.99 and 0.9 R, a wavy profile over a few
+ * wavelengths, with and without adhesion, under each control; raw random
+ * controls, the oracle on the f64 table (the q31 table is its rounding,
+ * ~2^-29 of each value: far inside the oracle's tie margin). Where the
+ * oracle finds a root first, the q31 engine must land on it without a jump
+ * within TOL_FIRST_Q31 = 1e-6 of L (t to an ulp of Q1.30 and the table's
+ * rounding; measured below), and jump where the oracle meets a fold
+ * first. */
+#define TOL_FIRST_Q31 1e-6
+static void coarse_tables_first_eq(void **st)
+{
+    static const uint16_t ns[] = {2, 4, 8};
+    static mdr_node_f64 nd[MDR_TABLE_NODES(8)];
+    static mdr_node_q31 ndq[MDR_TABLE_NODES(8)];
+    const double R = 4.35e-5, E = 2.87e6;
+    long cnt[5] = {0};
+    double worst = 0;
+    int pk, wi;
+    size_t in;
+    uint8_t ctl;
+    (void)st;
+    for (pk = 0; pk < 3; pk++) {
+        for (in = 0; in < sizeof ns / sizeof ns[0]; in++) {
+            const uint16_t n = ns[in];
+            const uint8_t kind = pk < 2 ? MDR_PROFILE_SPHERE : MDR_PROFILE_WAVY;
+            const double p[3] = {R, pk == 2 ? 0.02 * R : 0, pk == 2 ? 0.3 * R : 0};
+            const double L = pk == 0 ? 0.99 * R : 0.9 * R;
+            mdr_contact_f64 c;
+            mdr_table_f64 t;
+            mdr_table_q31 tq;
+            assert_int_equal(mdr_contact_init_f64(&c, kind, p, 1.0, 0.0), MDR_OK);
+            assert_int_equal(mdr_table_init_profile_f64(&t, nd, n, &c, L), MDR_OK);
+            assert_int_equal(mdr_table_q31_from_f64(&tq, ndq, &t), MDR_OK);
+            for (wi = 0; wi < 2; wi++) {
+                const double w = wi == 0 ? 0.0 : 0.05 * E * R / (2 * M_PI);
+                const double cw = sqrt(2 * M_PI * w / E), cadv = sqrt(2 * M_PI * (w / 2) / E);
+                for (ctl = MDR_CONTROL_LOAD; ctl <= MDR_CONTROL_MACHINE; ctl++) {
+                    const double km = ctl == MDR_CONTROL_MACHINE ? 2 * E * L : 0.0;
+                    const double al = ctl == MDR_CONTROL_LOAD ? 0.0 : 1.0;
+                    const double ka = ctl == MDR_CONTROL_GRIPS ? 0.0 : ctl == MDR_CONTROL_LOAD ? 1.0 : 2 * E / km;
+                    const or_branch badv = {al, ka, cadv}, brec = {al, ka, cw};
+                    const double Lq = (double)tq.L + (double)tq.L_lo;
+                    mdr_engine_q31 q;
+                    double unit, umax = -1e300, umin = 1e300, span;
+                    unsigned long r = 777u + 31u * n + 7u * ctl + 3u * (unsigned)pk;
+                    int i;
+                    assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, w, w / 2, km), MDR_OK);
+                    /* U per LSB of the raw control: d (D0), F/(2E*) (F0 = 2E* L D0), z (Z0) */
+                    unit = ctl == MDR_CONTROL_MACHINE ? (double)q.Z0 / 536870912.0
+                           : ctl == MDR_CONTROL_LOAD  ? Lq * (double)q.D0 / 536870912.0
+                                                      : (double)q.D0 / 536870912.0;
+                    for (i = 0; i <= n * ORACLE_M; i++) {
+                        const double x = t.h * n * i / (n * ORACLE_M);
+                        const double ua = or_U(nd, n, t.h, &badv, x, NULL), ur = or_U(nd, n, t.h, &brec, x, NULL);
+                        umax = fmax(umax, fmax(ua, ur));
+                        umin = fmin(umin, fmin(ua, ur));
+                    }
+                    span = umax - umin;
+                    for (i = 0; i < 60; i++) {
+                        double u, x0, xr = 0, a1;
+                        int want, contact = q.contact;
+                        int32_t raw;
+                        mdr_step_q31 o;
+                        r = r * 1103515245u + 12345u;
+                        u = i == 0 ? umin + 0.5 * span
+                                   : umin - 0.05 * span + 0.9 * span * (double)((r >> 8) % 10007u) / 10006.0;
+                        raw = (int32_t)lround(u / unit);
+                        u = raw * unit;
+                        x0 = q.a * Lq / 1073741824.0;
+                        assert_int_equal(ctl == MDR_CONTROL_GRIPS  ? mdr_engine_step_d_q31(&q, raw, &o)
+                                         : ctl == MDR_CONTROL_LOAD ? mdr_engine_step_F_q31(&q, raw, &o)
+                                                                   : mdr_engine_step_z_q31(&q, raw, &o),
+                                         MDR_OK);
+                        if (!contact) {
+                            continue;
+                        }
+                        a1 = o.a * Lq / 1073741824.0;
+                        want = or_tick(nd, n, t.h, al, ka, cadv, cw, x0, u, span, &xr);
+                        cnt[want]++;
+                        if (want == OR_ROOT) {
+                            const double err = fabs(a1 - xr) / L;
+                            if (o.jumps != 0 || err > TOL_FIRST_Q31) {
+                                printf("  n %u ctl %u w %g: tick %d from a = %.9g to u = %.9g: oracle root "
+                                       "a = %.9g, q31 a = %.9g, %u jumps\n",
+                                       n, ctl, w, i, x0, u, xr, a1, o.jumps);
+                            }
+                            assert_int_equal(o.jumps, 0);
+                            assert_true(err <= TOL_FIRST_Q31);
+                            worst = fmax(worst, err);
+                        } else if (want == OR_FOLD) {
+                            if (o.jumps == 0) {
+                                printf("  n %u ctl %u w %g: tick %d from a = %.9g to u = %.9g: oracle fold "
+                                       "first, q31 a = %.9g without a jump\n",
+                                       n, ctl, w, i, x0, u, a1);
+                            }
+                            assert_true(o.jumps >= 1);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    printf("  q31: %ld roots (worst %.1e of L, tolerance %.0e), %ld folds, %ld pinned, %ld to an end, %ld ties "
+           "skipped\n",
+           cnt[OR_ROOT], worst, TOL_FIRST_Q31, cnt[OR_FOLD], cnt[OR_PINNED], cnt[OR_END], cnt[OR_TIE]);
+    assert_true(cnt[OR_ROOT] > 300 && cnt[OR_FOLD] > 30);
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -745,6 +861,7 @@ int main(void)
         cmocka_unit_test(adhesion_limit),
         cmocka_unit_test(known_jumps),
         cmocka_unit_test(scenes_vs_ref),
+        cmocka_unit_test(coarse_tables_first_eq),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -117,8 +117,9 @@ typedef struct {
                        without one (no z qualifies) */
     /* the two jumps that cross the table, known from init (per control
      * mode, index MDR_CONTROL_* - 1; the step's units: d, F/(2E*), z) */
-    double u_min[3]; /**< the least U of the receding branch over the table's nodes: a
-                         fold whose landing aims below it pulls off (no scan) */
+    double u_min[3]; /**< the least U of the receding branch over the table's nodes and the
+                         turns inside its springs: a fold whose landing aims below it pulls
+                         off (no scan) */
     double t_in[3];  /**< sqrt(a) of the landing of a jump-in from a = 0 */
     double t_fold[3]; /**< sqrt(a) of the outermost fold of the receding branch */
     double u_fold[3]; /**< its U less U's rounding bound there: a move toward a control
@@ -127,6 +128,10 @@ typedef struct {
     uint16_t k;   /**< spring holding the edge: x_k <= a <= x_{k+1} */
     uint16_t k_in[3]; /**< the spring of t_in; 0xFFFF where none is known (the step scans) */
     uint16_t k_fold[3]; /**< the spring of t_fold; 0xFFFF where none is known */
+    uint16_t k_sure[3][2]; /**< per control mode and direction (0 receding, 1 advancing): the
+                                first spring from which every spring has its branch stable at
+                                both ends, so all through (the step tests the ends of the
+                                springs below it where it passes them) */
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the instance has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* */

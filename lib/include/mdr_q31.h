@@ -155,14 +155,19 @@ typedef struct {
     /* the two jumps that cross the table, known from init (per control
      * mode, index MDR_CONTROL_* - 1; the step's units: U Q2.29 of D0, t Q1.30;
      * as mdr_engine_f32) */
-    int64_t u_min[3];   /**< the least U of the receding branch over the table's nodes: a
-                             fold whose landing aims below it pulls off (no scan) */
+    int64_t u_min[3];   /**< the least U of the receding branch over the table's nodes and the
+                             turns inside its springs: a fold whose landing aims below it
+                             pulls off (no scan) */
     int64_t u_fold[3];  /**< U at t_fold less U's rounding bound: a move toward a control
                              below it from above the fold stops at the fold (no scan) */
     int32_t t_in[3];    /**< t of the landing of a jump-in from a = 0 */
     int32_t t_fold[3];  /**< t of the outermost fold of the receding branch */
     uint16_t k_in[3];   /**< the spring of t_in; 0xFFFF where none is known (the step scans) */
     uint16_t k_fold[3]; /**< the spring of t_fold; 0xFFFF where none is known */
+    uint16_t k_sure[3][2]; /**< per control mode and direction (0 receding, 1 advancing): the
+                                first spring from which every spring has its branch stable at
+                                both ends, so all through (the step tests the ends of the
+                                springs below it where it passes them) */
     uint16_t k; /**< spring holding the edge */
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the instance has been in contact */
