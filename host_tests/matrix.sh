@@ -88,7 +88,8 @@ run_one() {
     for t in $SUITES; do
         local extra=""
         [ $t = test_engine ] && extra=$B/gen_tip.o
-        [ $t = test_q31 ] && extra="ref/mdr_ref.c -lgsl -lgslcblas"
+        # (test_q31 includes the q31 kernels of lib/src: mk/tests.mk test_cflags)
+        [ $t = test_q31 ] && extra="-Ilib/src -fno-math-errno ref/mdr_ref.c -lgsl -lgslcblas"
         # shellcheck disable=SC2086
         if ! gcc $TFLAGS $opts host_tests/$t.c $extra $d/libmdr.a -lcmocka -lm -o $d/$t 2> $d/$t.build.log; then
             echo "[$n] $opts: $t build FAILED"; cat $d/$t.build.log; return 1

@@ -43,6 +43,13 @@ TEST_CFLAGS = ["-std=c99", "-D_GNU_SOURCE", "-O1", "-w"]
 UNITS = ["mdr_f32", "mdr_f64", "mdr_q31", "mdr_status"]
 GSL = ["-lgsl", "-lgslcblas", "-lm"]
 
+# suites that include kernels of lib/src (test_q31: the q31 rounding
+# shifts, with the library's -fno-math-errno, mk/tests.mk's test_cflags):
+# their flags, and the files whose mutants they see only when compiled
+# against the mutant's lib/src (then from source, like a header's mutant)
+SUITE_CFLAGS = {"test_q31": ["-fno-math-errno"]}
+KERNEL_FILES = {"test_q31": ["lib/src/engine/mdr_engine_q31.inc", "lib/src/mdr_arith_q31.h"]}
+
 # (name, sources, extra objects, libraries, command after the binary, time limit s)
 SUITES = [
     ("test_unit", ["host_tests/test_unit.c"], [], ["-lcmocka", "-lm"], [], 60),
@@ -155,24 +162,23 @@ def prebuild():
     """Test objects and shared objects, compiled once against the real headers."""
     os.makedirs(os.path.join(B, "obj"), exist_ok=True)
     inc = ["-I" + os.path.join(ROOT, d) for d in ("lib/include", "ref", "port/host", "host_tests",
-                                                  "examples")]
+                                                  "examples", "lib/src")]
     jobs = []
     for name, srcs, _, _, _, _ in SUITES:
         for s in srcs:
-            jobs.append((os.path.join(ROOT, s), os.path.join(B, "obj", name + ".o")))
-    jobs.append((os.path.join(ROOT, "ref/mdr_ref.c"), os.path.join(B, "obj", "ref.o")))
+            jobs.append((os.path.join(ROOT, s), os.path.join(B, "obj", name + ".o"), SUITE_CFLAGS.get(name, [])))
+    jobs.append((os.path.join(ROOT, "ref/mdr_ref.c"), os.path.join(B, "obj", "ref.o"), []))
     gen = os.path.join(ROOT, "build/host/gen_tip.c")
     if not os.path.isfile(gen):
         r = run(["make", "--no-print-directory", "build/host/gen_tip.c"], cwd=ROOT)
         if r.returncode != 0:
             sys.exit("mutate: cannot build build/host/gen_tip.c:\n" + r.stdout.decode())
-    jobs.append((gen, os.path.join(B, "obj", "gen_tip.o")))
-    for src, obj in jobs:
+    jobs.append((gen, os.path.join(B, "obj", "gen_tip.o"), []))
+    for src, obj, extra in jobs:
         if os.path.isfile(obj) and os.path.getmtime(obj) > max(
                 os.path.getmtime(src), newest_header()):
             continue
-        flags = TEST_CFLAGS + (["-Wall"] if False else [])
-        r = run(["gcc"] + flags + inc + ["-c", src, "-o", obj])
+        r = run(["gcc"] + TEST_CFLAGS + extra + inc + ["-c", src, "-o", obj])
         if r.returncode != 0:
             sys.exit("mutate: cannot compile %s:\n%s" % (src, r.stdout.decode()))
 
@@ -188,6 +194,9 @@ def newest_header():
             for f in os.listdir(os.path.join(ROOT, d)):
                 if f.endswith(".h"):
                     t = max(t, os.path.getmtime(os.path.join(ROOT, d, f)))
+        for fs in KERNEL_FILES.values():
+            for f in fs:
+                t = max(t, os.path.getmtime(os.path.join(ROOT, f)))
         _newest = t
     return _newest
 
@@ -255,10 +264,12 @@ def mutant(e, keep):
     verdict, detail = "survived", ""
     for name, srcs, extra, libs, args, limit in suites_for(e.get("module")):
         exe = os.path.join(d, name)
-        if header_mutant:  # tests see the mutated headers: compile from source
-            tinc = inc + ["-I" + os.path.join(ROOT, x) for x in ("ref", "host_tests", "examples")]
+        if header_mutant or e["file"] in KERNEL_FILES.get(name, []):
+            # tests see the mutated headers or kernels: compile from source
+            tinc = inc + ["-I" + os.path.join(ROOT, x) for x in ("ref", "host_tests", "examples")] + \
+                ["-I" + os.path.join(d, "lib/src")]
             ins = [os.path.join(ROOT, s) for s in srcs]
-            flags = TEST_CFLAGS + tinc
+            flags = TEST_CFLAGS + SUITE_CFLAGS.get(name, []) + tinc
         else:
             ins = [os.path.join(B, "obj", name + ".o")]
             flags = []

@@ -49,6 +49,8 @@
  *     only at the nodes and passed the turn). Its pull-offs meet GOAL_SMOOTH
  *     (measured 1.1e-6): the table puts the rim on a node (issue 16; 3.7e-3
  *     with the rim inside a spring).
+ *   the 32-bit rounding shifts (rounding_shifts_32): exactly the 64-bit
+ *     chain's values (a change of a value would change the fingerprint);
  *   the adhesion limit MDR_Q31_ADH_LSB (adhesion_limit): the least w that
  *     init accepts, found by bisection, has a JKR pull-off (exact on a
  *     paraboloid's table) of 1 to ADH_FLIP_MAX = 1.05 times the limit
@@ -86,6 +88,9 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, q31, the spring engine and every profile")
 #include "scenes.h"
 #ifndef MDR_TARGET_TEST
 #include "first_eq.h"
+/* the q31 kernels themselves (rounding_shifts_32) */
+#include "mdr_arith_q31.h"
+#include "engine/mdr_engine_q31.inc"
 #endif
 #include "test_util.h"
 
@@ -744,6 +749,53 @@ static void saturation(void **st)
 }
 
 #ifndef MDR_TARGET_TEST
+/* The q31 engine's 32-bit rounding shifts (mdr_q_rs32v, mdr_q_sh32: a table
+ * value or a spring coefficient in engine units, shifted by a count known
+ * at run time) against the 64-bit chain they replace (mdr_q_rs, mdr_q_sh):
+ * the same value, exactly, for every shift the engine can ask for (1..63
+ * right, 30 left) and v at the ends of int32, every power of two and its
+ * negative, and 2^16 pseudo-random values of every magnitude (the kernels
+ * are included from lib/src: this suite builds with -Ilib/src and the
+ * library's -fno-math-errno, mk/tests.mk; make mutate compiles it against
+ * each mutant of those kernels). */
+static void rounding_shifts_32(void **st)
+{
+    static const int32_t edge[] = {INT32_MIN, INT32_MIN + 1, INT32_MAX, INT32_MAX - 1, 0, 1, -1, 2, -2, 3, -3,
+                                   0x3fffffff, -0x3fffffff, 0x40000001, -0x40000001};
+    uint32_t x = 2463534242u; /* xorshift32 */
+    long i, n = 0;
+    (void)st;
+    for (i = 0; i < 15 + 64 + 65536; i++) {
+        int32_t v;
+        unsigned s;
+        if (i < 15) {
+            v = edge[i];
+        } else if (i < 15 + 64) {
+            const unsigned k = (unsigned)(i - 15) % 32u;
+            v = (int32_t)(1u << k);
+            v = i - 15 < 32 ? v : (int32_t)(0u - (1u << k));
+        } else {
+            x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+            v = (int32_t)x;
+            v = v >= 0 ? v >> (x % 31u) : ~(~v >> (x % 31u)); /* (every magnitude) */
+        }
+        for (s = 1; s <= 63; s++, n++) {
+            if ((int64_t)mdr_q_rs32v(v, s) != mdr_q_rs(v, s)) {
+                fail_msg("mdr_q_rs32v(%ld, %u) = %ld, mdr_q_rs %lld", (long)v, s, (long)mdr_q_rs32v(v, s),
+                         (long long)mdr_q_rs(v, s));
+            }
+        }
+        for (s = 0; s <= 92; s++) { /* (shifts -30 ... 62) */
+            const int sh = (int)s - 30;
+            if (mdr_q_sh32(v, sh) != mdr_q_sh(v, sh)) {
+                fail_msg("mdr_q_sh32(%ld, %d) = %lld, mdr_q_sh %lld", (long)v, sh, (long long)mdr_q_sh32(v, sh),
+                         (long long)mdr_q_sh(v, sh));
+            }
+        }
+    }
+    assert_true(n == (15 + 64 + 65536) * 63L);
+}
+
 /* The first equilibrium on the way on coarse tables (test_engine's
  * first_equilibrium_coarse_tables, whose oracle this is: first_eq.h), for
  * the q31 engine on q31 tables of 2, 4 and 8 springs made from the f64
@@ -868,6 +920,7 @@ int main(void)
         cmocka_unit_test(known_jumps),
         cmocka_unit_test(scenes_vs_ref),
         cmocka_unit_test(coarse_tables_first_eq),
+        cmocka_unit_test(rounding_shifts_32),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -38,7 +38,7 @@ step-cost: $(B)/tgt-m4/step_cost.elf $(B)/tgt-m3/step_cost.elf
 	  && cp $(B)/bench/performance.md docs/performance.md
 	@echo "step-cost: $(B)/bench/step_cost.csv written; docs/performance.md's step-cost table updated"
 # Where one line's instructions go: make step-trace [TRACE=scene,q31,afm]
-# [CORE=m3|m4] [CLASS=moving|pinned|separated|all] [DEPTH=1] [TOP=25].
+# [CORE=m3|m4] [CLASS=moving|pinned|separated|all|worst] [DEPTH=1] [TOP=25].
 # step_cost.c runs that line alone (-DSTEP_TRACE), against a copy of the
 # core's library with -g (same code), under QEMU's instruction trace
 # (-singlestep -d exec,nochain); mk/step_trace.py checks the trace's ticks
@@ -64,8 +64,8 @@ endif
 ifeq ($(filter m3 m4,$(CORE)),)
 $(error step-trace: CORE=$(CORE) is not a core it traces (m3, m4 or m4f))
 endif
-ifeq ($(filter moving pinned separated all,$(CLASS)),)
-$(error step-trace: CLASS=$(CLASS) is not a tick class (moving, pinned, separated or all))
+ifeq ($(filter moving pinned separated all worst,$(CLASS)),)
+$(error step-trace: CLASS=$(CLASS) is not a tick class (moving, pinned, separated, all or worst))
 endif
 ifeq ($(shell echo '$(DEPTH) $(TOP)' | grep -Ex '[1-9][0-9]{0,2} [1-9][0-9]{0,3}'),)
 $(error step-trace: DEPTH=$(DEPTH) and TOP=$(TOP) must be counts from 1)

@@ -22,7 +22,7 @@ libc): `step_trace.py ELF --dfilter --line ...` prints that -dfilter.
 
 usage: step_trace.py ELF --dfilter --line engine,arith,cycle
        step_trace.py ELF QEMU_LOG TICKS_LOG --line engine,arith,cycle
-                     [--class moving|pinned|separated|all] [--depth N] [--top N]
+                     [--class moving|pinned|separated|all|worst] [--depth N] [--top N]
                      [--prefix arm-none-eabi-]
 """
 import argparse
@@ -127,7 +127,7 @@ def main():
     ap.add_argument("ticks_log", nargs="?")
     ap.add_argument("--dfilter", action="store_true")
     ap.add_argument("--line", required=True, help="engine,arith,cycle (STEP_TRACE)")
-    ap.add_argument("--class", dest="cls", default="moving", choices=list(CLASSES) + ["all"])
+    ap.add_argument("--class", dest="cls", default="moving", choices=list(CLASSES) + ["all", "worst"])
     ap.add_argument("--top", type=int, default=25)
     ap.add_argument("--depth", type=int, default=1,
                     help="name a function with this many of its inlining callers (1: the innermost alone)")
@@ -164,7 +164,12 @@ def main():
     if bad:
         sys.exit("step_trace: %d ticks differ, the first: %s" % (len(bad), ", ".join(
             "tick %d: %d in the trace, %d counted" % (j + 1, len(ticks[j]), counts[j][0]) for j in bad[:6])))
-    sel = [t for t, (_, c) in zip(ticks, counts) if a.cls == "all" or c == CLASSES[a.cls]]
+    if a.cls == "worst":  # the line's max: the first of its longest ticks
+        w = max(range(len(counts)), key=lambda j: (counts[j][0], -j))
+        print("the worst tick is tick %d (class %d)" % (w + 1, counts[w][1]))
+        sel = [ticks[w]]
+    else:
+        sel = [t for t, (_, c) in zip(ticks, counts) if a.cls == "all" or c == CLASSES[a.cls]]
     if not sel:
         sys.exit("step_trace: no %s ticks" % a.cls)
     nm = names(a.elf, {pc for t in sel for pc in t}, a.prefix)
