@@ -49,6 +49,10 @@
  *     only at the nodes and passed the turn). Its pull-offs meet GOAL_SMOOTH
  *     (measured 1.1e-6): the table puts the rim on a node (issue 16; 3.7e-3
  *     with the rim inside a spring).
+ *   the same LSB figures on coarse tables (coarse_tables_lsb: 2 and 16
+ *     springs, the sphere to 0.99 R on 4 and 16): TOL_LSB as at N = 1024
+ *     (measured 2.4 and 1.1); each line prints the table's own budget,
+ *     max|dD/dt|/2 + 3 LSB;
  *   the 32-bit rounding shifts (rounding_shifts_32): exactly the 64-bit
  *     chain's values (a change of a value would change the fingerprint);
  *   the adhesion limit MDR_Q31_ADH_LSB (adhesion_limit): the least w that
@@ -259,6 +263,71 @@ static void scenes_vs_ref(void **st)
     }
     printf("    worst: e_curve %.2e, pull-off %.2e; q31 - f64: %.1f LSB, %.1f LSB; f32 init %.1f LSB\n",
            worst[0], worst[2], worst[1], worst[3], worst[4]);
+}
+
+/* The fixed-point part on coarse tables: scenes_vs_ref's LSB figures (the
+ * q31 state's residual against the f64 table's own curve, the pull-off
+ * q31 - f64) for every scene and control on tables of 2 and 16 springs
+ * (the same cycles; the tables' own error, which grows as N falls, drops
+ * out of these figures) and on the exact sphere tabulated to 0.99 R (its
+ * slope g' grows like 1/sqrt(R - a) toward the end), 4 and 16 springs.
+ * Tolerance TOL_LSB as at N = 1024. Its derivation (the top of this file:
+ * t to one ulp, worth |dD/dt| 2^-30 of D0, plus a few roundings) depends on
+ * the table's steepest slope, so each line also prints that budget,
+ * max|dD/dt|/2 + 3 LSB with max|dD/dt| <= 2 L max|g'|/D0 + c_w (t <= 1; g'
+ * of each spring's quadratic at its ends, where it is largest): 5.2 to 9.6
+ * here. Measured (stop 48, N = 2 to 1024 in a throwaway sweep): at most
+ * 2.5 LSB and 1.6 LSB. */
+static double lsb_budget(const mdr_table_f64 *t, const mdr_engine_q31 *q)
+{
+    double m = 0, L = t->h * t->n;
+    int i;
+    for (i = 0; i < t->n; i++) { /* g = g_i + e dg + (6 q_i/h) e (1 - e), e in [0, 1] */
+        const double dg = t->node[i + 1].g - t->node[i].g, c = 6 * t->node[i].q / t->h;
+        m = fmax(m, fmax(fabs(dg + c), fabs(dg - c)) / t->h);
+    }
+    return (2 * L * m / q->D0 + q->c_w / 536870912.0) / 2 + 3;
+}
+
+static void coarse_tables_lsb(void **st)
+{
+    const char *cn[] = {"", "load", "grips", "machine"};
+    static const uint16_t ns[] = {2, 16};
+    double worst[2] = {0, 0};
+    size_t k, in;
+    int ctl;
+    (void)st;
+    printf("  coarse tables: q31 LSB against the f64 table's curve, pull-off q31 - f64, budget\n");
+    for (k = 0; k <= NSCENES; k++) {
+        for (in = 0; in < 2; in++) {
+            scene sc = k < NSCENES ? scenes[k] : scenes[4];
+            const uint16_t n = k < NSCENES ? ns[in] : (uint16_t)(4u + 12u * in);
+            mdr_table_f64 t64;
+            mdr_table_q31 tq;
+            mdr_engine_q31 q;
+            double b;
+            if (k == NSCENES) {
+                sc.name = "sphere to 0.99 R";
+                sc.L = 0.99 * sc.s.p[0];
+            }
+            assert_int_equal(scene_table_f64(&sc, &t64, nf, n), MDR_OK);
+            assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+            assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, sc.s.E, sc.s.w, sc.s.w, 0), MDR_OK);
+            b = lsb_budget(&t64, &q);
+            for (ctl = 1; ctl <= 3; ctl++) {
+                const result r = cycle(&sc, &t64, &tq, ctl);
+                char what[128];
+                printf("    %-17s N %2u %-8s %4.1f  %4.1f LSB  (budget %.1f)\n", sc.name, n, cn[ctl], r.lsb, r.dPo, b);
+                worst[0] = fmax(worst[0], r.lsb);
+                worst[1] = fmax(worst[1], r.dPo);
+                snprintf(what, sizeof what, "q31 LSB, coarse table [%s N %u %s]", sc.name, n, cn[ctl]);
+                err_le(r.lsb, TOL_LSB, what);
+                snprintf(what, sizeof what, "pull-off q31 - f64, coarse table [%s N %u %s]", sc.name, n, cn[ctl]);
+                err_le(r.dPo, TOL_LSB, what);
+            }
+        }
+    }
+    printf("    worst: %.1f LSB, pull-off %.1f LSB (tolerance %.0f)\n", worst[0], worst[1], TOL_LSB);
 }
 
 /* The two jumps that cross the table, known from init (the engine's u_min,
@@ -919,6 +988,7 @@ int main(void)
         cmocka_unit_test(adhesion_limit),
         cmocka_unit_test(known_jumps),
         cmocka_unit_test(scenes_vs_ref),
+        cmocka_unit_test(coarse_tables_lsb),
         cmocka_unit_test(coarse_tables_first_eq),
         cmocka_unit_test(rounding_shifts_32),
 #endif
