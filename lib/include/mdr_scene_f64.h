@@ -34,7 +34,10 @@
  *
  * Units inside the instance are normalised by powers of two chosen at init
  * (exact scaling: no rounding, no overflow for any scene whose results fit
- * the arithmetic): radius a_s, depth D_s = C a_s^n, force 2E* a_s D_s.
+ * the arithmetic): radius a_s, depth D_s = C a_s^n, force 2E* a_s D_s;
+ * a_s near the adhesive length where c_w sqrt(a) ~ g(a), without adhesion
+ * (w = 0, n >= 2) near the profile's own length where g(a) ~ a (the
+ * paraboloid's R), the cone's 1 m.
  *
  * Outputs (the `outputs` argument of init, MDR_OUT_* bits): the step always
  * solves for d and F and writes out->d and out->F; MDR_OUT_RADIUS adds
