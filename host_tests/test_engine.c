@@ -69,7 +69,13 @@
  *     1/20000 of the path; measured 1.3e-7); a non-adhesive cycle
  *     dissipates nothing: 2e-9 of the loading work (the trapezoid rule on
  *     different ticks up and down; measured
- *     3.4e-10).
+ *     3.4e-10);
+ *   no fold the profile does not have (no_false_folds: the sphere, cone and
+ *     power laws n = 2 to 8 on 2 to 1024 springs, f64 and f32): without
+ *     adhesion exact event counts (one contact, one separation, no jump)
+ *     and F >= -1e-12 (f32: -1e-6) of the cycle's max|F|; w_adv = 0 touches
+ *     with event CONTACT and no jump under every control; the flattened tip
+ *     one jump-in and one pull-off, no other jump.
  */
 #include <float.h>
 #include <math.h>
@@ -717,6 +723,169 @@ static void non_adhesive_cycle(void **st)
     rel_le(e.en.dissipated, 0.0, Wl, 2e-9, "Hertz cycle dissipates nothing");
 }
 
+/* No fold the profile does not have (profile/mdr_table.inc's clamp of a
+ * spring's quadratic, stop 48; a helper's attack): g rises monotonically
+ * from g(0) = 0 for the sphere, the paraboloid, the cone and every power
+ * law, so (physics, not the code) without adhesion a grips cycle touches
+ * and separates without a jump or a tensile force, and Hertz-like loading
+ * (w_adv = 0, w > 0) touches without a jump under every control. Before,
+ * the quadratic holding a spring's integral dipped below its start for
+ * g ~ x^n, n > 2 (and the sphere's spring 0): the retraction "pulled off"
+ * at -1e-22 N and n >= 5 jumped in. Tables of 2, 8, 64 and 1024 springs,
+ * f64 and f32; sphere to 0.5, 0.9 and 0.99 R, power laws n = 2 to 8, the
+ * cone. Tolerance: F >= -1e-12 of the cycle's max|F| (f32: -1e-6), exact
+ * event counts. And the flattened tip (w_adv = w, N = 1024): one jump-in,
+ * one pull-off, no jump at the node above its rim (the quadratic there
+ * had g' = 0 at its end: a turn of the table only, stop 46's extra jump). */
+static void no_false_folds(void **st)
+{
+    static const uint16_t ns[] = {2, 8, 64, 1024};
+    const double E = 1e6, R = 1e-5;
+    long cases = 0;
+    int prof, in, ar;
+    (void)st;
+    for (prof = 0; prof < 11; prof++) {
+        /* 0..2 sphere to 0.5, 0.9, 0.99 R; 3 cone; 4..10 power law n = 2..8 (C R^(n-1) = 1/2) */
+        const uint8_t kind = prof < 3 ? MDR_PROFILE_SPHERE : prof == 3 ? MDR_PROFILE_CONE : MDR_PROFILE_POWERLAW;
+        const int np = prof - 2;
+        const double p[3] = {prof < 3 ? R : prof == 3 ? 0.3 : 0.5 * pow(R, 1 - np), prof < 4 ? 0 : np, 0};
+        const double xm = prof == 0 ? 0.5 * R : prof == 2 ? 0.99 * R : 0.9 * R;
+        for (in = 0; in < 4; in++) {
+            for (ar = 0; ar < 2; ar++) {
+                mdr_contact_f64 c;
+                double g8, dmax, Fmax = 0, Fmin = 0;
+                int ctl, i, ev[16] = {0}, jumps = 0;
+                mdr_table_f64 t64;
+                mdr_table_f32 t32;
+                mdr_engine_f64 e64;
+                mdr_engine_f32 e32;
+                const float p32[3] = {(float)p[0], (float)p[1], 0};
+                table64(&t64, kind, p, ns[in], xm);
+                table32(&t32, kind, p32, ns[in], (float)xm);
+                assert_int_equal(mdr_contact_init_f64(&c, kind, p, E, 0.0), MDR_OK);
+                assert_int_equal(mdr_profile_eval_f64(&c, 0.8 * xm, &g8, NULL, NULL), MDR_OK);
+                dmax = g8;
+                /* (a) w = 0: a grips cycle */
+                assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, 0.0, 0.0, 0), MDR_OK);
+                assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, 0.0f, 0.0f, 0), MDR_OK);
+                for (i = 1; i <= 800; i++) {
+                    const double d = i <= 400 ? dmax * i / 400.0 : dmax - 1.1 * dmax * (i - 400) / 400.0;
+                    double F;
+                    int evi;
+                    if (ar == 0) {
+                        mdr_step_f64 o;
+                        assert_int_equal(mdr_engine_step_d_f64(&e64, d, &o), MDR_OK);
+                        F = o.F, evi = o.event, jumps += o.jumps;
+                    } else {
+                        mdr_step_f32 o;
+                        assert_int_equal(mdr_engine_step_d_f32(&e32, (float)d, &o), MDR_OK);
+                        F = o.F, evi = o.event, jumps += o.jumps;
+                    }
+                    Fmax = fmax(Fmax, fabs(F));
+                    Fmin = fmin(Fmin, F);
+                    ev[evi & 15]++;
+                }
+                if (ev[MDR_EV_CONTACT] != 1 || ev[MDR_EV_SEPARATION] != 1 || ev[MDR_EV_PULL_OFF] || ev[MDR_EV_JUMP] ||
+                    ev[MDR_EV_JUMP_IN] || jumps || Fmin < -(ar ? 1e-6 : 1e-12) * Fmax) {
+                    printf("  w = 0, profile %d N %u %s: contact %d separation %d pull-off %d jump %d jump-in %d, "
+                           "%d jumps, least F %.3g of max|F|\n",
+                           prof, ns[in], ar ? "f32" : "f64", ev[MDR_EV_CONTACT], ev[MDR_EV_SEPARATION],
+                           ev[MDR_EV_PULL_OFF], ev[MDR_EV_JUMP], ev[MDR_EV_JUMP_IN], jumps, Fmin / Fmax);
+                }
+                assert_int_equal(ev[MDR_EV_CONTACT], 1);
+                assert_int_equal(ev[MDR_EV_SEPARATION], 1);
+                assert_int_equal(ev[MDR_EV_PULL_OFF] + ev[MDR_EV_JUMP] + ev[MDR_EV_JUMP_IN] + jumps, 0);
+                assert_true(Fmin >= -(ar ? 1e-6 : 1e-12) * Fmax);
+                /* (b) w > 0, w_adv = 0: the first touch under each control */
+                for (ctl = (int)MDR_CONTROL_LOAD; ctl <= (int)MDR_CONTROL_MACHINE; ctl++) {
+                    const double w = 0.05 * E * R / 100, km = ctl == MDR_CONTROL_MACHINE ? E * xm : 0;
+                    const double u = ctl == MDR_CONTROL_LOAD ? 1e-6 * E * xm * dmax : 1e-3 * dmax;
+                    int evt;
+                    unsigned jt;
+                    if (ar == 0) {
+                        mdr_step_f64 o;
+                        assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, 0.0, km), MDR_OK);
+                        assert_int_equal(step64_of((uint8_t)ctl)(&e64, u, &o), MDR_OK);
+                        evt = o.event, jt = o.jumps;
+                    } else {
+                        mdr_step_f32 o;
+                        assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, 0.0f, (float)km), MDR_OK);
+                        assert_int_equal(step32_of((uint8_t)ctl)(&e32, (float)u, &o), MDR_OK);
+                        evt = o.event, jt = o.jumps;
+                    }
+                    if (evt != (int)MDR_EV_CONTACT || jt != 0) {
+                        printf("  w_adv = 0, profile %d N %u %s control %d: event %d, %u jumps\n", prof, ns[in],
+                               ar ? "f32" : "f64", ctl, evt, jt);
+                    }
+                    assert_int_equal(evt, MDR_EV_CONTACT);
+                    assert_int_equal(jt, 0);
+                }
+                cases++;
+            }
+        }
+    }
+    {
+        /* the helper's case (mdr cycle --profile powerlaw --C 1 --n N --E 1
+         * --w 0.1 --control grips --path 0,0.1,-1 --steps-per-segment 1000):
+         * n = 5 to 8, 1024 springs to the CLI's a_max, w_adv = 0; a slope of 0
+         * at a node (the clamp without its margin) jumped in at n = 8 */
+        static const double amax[4] = {0.96206293954610911, 0.99350039677455126, 1.0177869407367752,
+                                       1.0372432683485249};
+        int n;
+        for (n = 5; n <= 8; n++) {
+            const double p[3] = {1.0, n, 0};
+            mdr_table_f64 t64;
+            mdr_table_f32 t32;
+            mdr_engine_f64 e64;
+            mdr_engine_f32 e32;
+            const float p32[3] = {1.0f, (float)n, 0};
+            mdr_step_f64 o64;
+            mdr_step_f32 o32;
+            table64(&t64, MDR_PROFILE_POWERLAW, p, 1024, amax[n - 5]);
+            table32(&t32, MDR_PROFILE_POWERLAW, p32, 1024, (float)amax[n - 5]);
+            assert_int_equal(mdr_engine_init_f64(&e64, &t64, 1.0, 0.1, 0.0, 0), MDR_OK);
+            assert_int_equal(mdr_engine_init_f32(&e32, &t32, 1.0f, 0.1f, 0.0f, 0), MDR_OK);
+            assert_int_equal(mdr_engine_step_d_f64(&e64, 1e-4, &o64), MDR_OK);
+            assert_int_equal(mdr_engine_step_d_f32(&e32, 1e-4f, &o32), MDR_OK);
+            if (o64.event != MDR_EV_CONTACT || o64.jumps || o32.event != MDR_EV_CONTACT || o32.jumps) {
+                printf("  power law n = %d, C = 1, E* = 1: f64 event %u (%u jumps), f32 event %u (%u jumps)\n", n,
+                       o64.event, o64.jumps, o32.event, o32.jumps);
+            }
+            assert_int_equal(o64.event, MDR_EV_CONTACT);
+            assert_int_equal(o64.jumps, 0);
+            assert_int_equal(o32.event, MDR_EV_CONTACT);
+            assert_int_equal(o32.jumps, 0);
+        }
+    }
+    {
+        /* the flattened tip of test_q31's scene (R 1 um, flat to 0.2 um, E* 1e6, w = w_adv = 0.01) */
+        const double pf[3] = {1e-6, 0.2e-6, 0};
+        mdr_table_f64 t64;
+        int ctl;
+        table64(&t64, MDR_PROFILE_FLATTIP, pf, 1024, 0.9e-6);
+        for (ctl = (int)MDR_CONTROL_GRIPS; ctl <= (int)MDR_CONTROL_MACHINE; ctl++) {
+            mdr_engine_f64 e;
+            mdr_step_f64 o;
+            int i, njump = 0, nin = 0, npo = 0;
+            const double top = ctl == MDR_CONTROL_GRIPS ? 0.3e-6 : 0.3e-6 + 0.3e-6, bot = -0.3e-6;
+            assert_int_equal(mdr_engine_init_f64(&e, &t64, 1e6, 0.01, 0.01, ctl == MDR_CONTROL_MACHINE ? 0.6 : 0), MDR_OK);
+            for (i = 1; i <= 4000; i++) {
+                const double u = i <= 2000 ? top * i / 2000.0 : top + (bot - top) * (i - 2000) / 2000.0;
+                assert_int_equal(step64_of((uint8_t)ctl)(&e, u, &o), MDR_OK);
+                njump += o.event == MDR_EV_JUMP;
+                nin += o.event == MDR_EV_JUMP_IN;
+                npo += o.event == MDR_EV_PULL_OFF;
+            }
+            printf("  flattened tip, control %d: jump-in %d, pull-off %d, other jumps %d\n", ctl, nin, npo, njump);
+            assert_int_equal(nin, 1);
+            assert_int_equal(npo, 1);
+            assert_int_equal(njump, 0);
+        }
+    }
+    printf("  no false folds: %ld tables (11 profiles, N 2 to 1024, f64 and f32), w = 0 cycles and w_adv = 0 touches\n",
+           cases);
+}
+
 /* ------------------------------------------------------ wavy (seed 4.54) */
 
 static void wavy_case(double hl, int quiet, double *ratio_load, double *ratio_dgrips)
@@ -1359,7 +1528,7 @@ static void first_equilibrium_coarse_tables(void **st)
             for (wi = 0; wi < 2; wi++) {
                 /* no adhesion; adhesion with 2 pi w/(E* R) = 0.05 */
                 const double w = wi == 0 ? 0.0 : 0.05 * E * R / (2 * PI_);
-                for (ctl = MDR_CONTROL_LOAD; ctl <= MDR_CONTROL_MACHINE; ctl++) {
+                for (ctl = (int)MDR_CONTROL_LOAD; ctl <= (int)MDR_CONTROL_MACHINE; ctl++) {
                     const double km = ctl == MDR_CONTROL_MACHINE ? 2 * E * L : 0.0; /* kappa L = 1 */
                     for (f32 = 0; f32 < 2; f32++) {
                         first_eq_case(f32 ? n32d : t.node, n, f32 ? (double)t32.h : t.h, E, w, km, ctl, f32,
@@ -1529,6 +1698,7 @@ int main(void)
         cmocka_unit_test(oracle_cycles),
         cmocka_unit_test(energy_jkr_cycle),
         cmocka_unit_test(non_adhesive_cycle),
+        cmocka_unit_test(no_false_folds),
         cmocka_unit_test(wavy_seed_fig_4_9),
         cmocka_unit_test(flat_punch_wall),
         cmocka_unit_test(rims_on_nodes),

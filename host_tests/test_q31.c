@@ -37,16 +37,16 @@
  *     constants' rounding fell;
  *   the goals of issue 4, asserted too: e_curve and e_po below
  *     GOAL_SMOOTH = 1e-4, except the flattened tip's e_curve: GOAL_FLATTIP =
- *     1e-3 (measured 8.4e-4 through a machine and 6.4e-4 under grips), the
+ *     1e-3 (measured 8.4e-4 through a machine, 8.5e-7 under grips), the
  *     error of the 1024-spring table itself (the f64 engine's is the same):
  *     just above the rim x = b of the flat g' grows like 1/sqrt(x - b),
- *     which quadratic springs of width h resolve only to O(h^1.5). The
- *     spring above the rim, whose quadratic has g' near 0 at its upper end
- *     (for g ~ sqrt(x - b) exactly 0), turns the branch at that node: since
- *     stop 46 the engine, which tests each spring's ends, jumps there, a
- *     fraction of a spring, and its states inside that spring carry the
- *     table's error there (6.3e-4 and 3.6e-7 before, when the scan looked
- *     only at the nodes and passed the turn). Its pull-offs meet GOAL_SMOOTH
+ *     which quadratic springs of width h resolve only to O(h^1.5). (Under
+ *     grips 6.4e-4 from stop 46 to 47: the spring above the rim, whose
+ *     quadratic had g' near 0 at its upper end, turned the branch at that
+ *     node and the engine jumped there; since stop 48 the tables keep each
+ *     spring's quadratic monotone, profile/mdr_table.inc, and the grips
+ *     curve is the table's again, 3.6e-7 when the scan looked
+ *     only at the nodes and passed the turn.) Its pull-offs meet GOAL_SMOOTH
  *     (measured 1.1e-6): the table puts the rim on a node (issue 16; 3.7e-3
  *     with the rim inside a spring).
  *   the same LSB figures on coarse tables (coarse_tables_lsb: 2 and 16
