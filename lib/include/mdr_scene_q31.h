@@ -97,12 +97,14 @@ typedef struct {
  * @param[out] q     the q31 scene; untouched unless MDR_OK
  * @param[in]  s     an initialised float scene (mdr_scene_init_*_f32)
  * @param[in]  a_max the largest contact radius the scene must reach [m],
- *                   finite > 0, at least the fold radius of the retraction
- *                   branch under every control (the JKR pull-off radius
- *                   under fixed load, a little above the float scene's
- *                   a_s tf[0]^2)
+ *                   finite > 0; its L (above, the least a_s 4^k >= a_max)
+ *                   must reach the fold radius of the retraction branch
+ *                   under every control (the JKR pull-off radius under
+ *                   fixed load, a little above the float scene's
+ *                   a_s tf[0]^2): an a_max below that fold is accepted
+ *                   where its L reaches it
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE (a_max), MDR_E_PARAM (a_max
- *         <= 0, below a retraction fold, or so far above it that the
+ *         <= 0, L below a retraction fold, or so far above it that the
  *         pull-off force is below MDR_Q31_ADH_LSB LSB of F: with w > 0;
  *         the adhesion unresolved), MDR_E_CONTROL (kappa =
  *         2 E* L/k_m > 2^16), MDR_E_OVERFLOW (a unit beyond float range,
