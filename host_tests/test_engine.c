@@ -75,7 +75,14 @@
  *     adhesion exact event counts (one contact, one separation, no jump)
  *     and F >= -1e-12 (f32: -1e-6) of the cycle's max|F|; w_adv = 0 touches
  *     with event CONTACT and no jump under every control; the flattened tip
- *     one jump-in and one pull-off, no other jump.
+ *     one jump-in and one pull-off, no other jump;
+ *   a dimpled tip's pull-off without adhesion inside spring 0
+ *     (dimple_pull_off_in_spring_0; its g is quadratic, so the table is
+ *     exact): a0, d0, F0 to TOL_X64 / TOL_X32 of the closed forms (measured
+ *     8.7e-15, 1.3e-6); q31 a0 to 32 LSB of L (the fold's radius is
+ *     ill-conditioned: U is flat there; measured 13.3), F0 to 2 LSB of F0
+ *     (measured 0.82), d0 to 2 L/a0 + 2 LSB of D0 (under load
+ *     d = (F/(2E*) + G)/a: G's LSB grows by L/a; measured 0.5 L/a0).
  */
 #include <float.h>
 #include <math.h>
@@ -473,6 +480,99 @@ static void pull_off_inside_spring_0(void **st)
         }
     }
     assert_true(found);
+}
+
+/* A tip with a dimple, f(r) = A r^2 - B r (g(x) = 2A x^2 - (pi/2) B x,
+ * seed 4.13 term by term), without adhesion: g falls from the touch point
+ * to its least value at x_m = pi B/(8A) and rises beyond, so the receding
+ * branch under load has a fold at x_m, where dF/da = 2E* a g'(a) = 0:
+ * d0 = g(x_m) = -2A x_m^2 and F0 = 2E* (x_m g(x_m) - G(x_m))
+ * = -(4/3) E* A x_m^3. With x_m at 0.55 .. 0.95 of spring 0 the table's
+ * node values fall from node 0 to node 1 (no clamp: mdr_table.inc), and
+ * spring 0 holds the fold. One load tick from deep contact to 1.5 F0
+ * crosses it: a pull-off at the fold, not a slide to a = 0 (the scan's
+ * test for a branch that turns before the touch point, mdr_e_touch_turns;
+ * without it, event SEPARATION for x_m <= 0.65 h). 4, 8 and 64 springs,
+ * f64, f32 and q31 (the q31 table from the f64 one). One grips tick to
+ * 1.5 d0 pulls off at the same fold (d0 = g(x_m)). */
+static void dimple_pull_off_in_spring_0(void **st)
+{
+    static const uint16_t ns[] = {4, 8, 64};
+    static double r[801], f[801];
+    static float rf[801], ff[801];
+    static mdr_node_q31 nq[MDR_TABLE_NODES(64)];
+    const double E = 1e6, A = 1e5, h = 1e-7, LSB = 1.0 / 536870912.0;
+    int in, k, i, ctl;
+    (void)st;
+    for (in = 0; in < 3; in++) {
+        for (k = 0; k <= 8; k++) {
+            const uint16_t n = ns[in];
+            const double xm = (0.55 + 0.05 * k) * h, B = 8.0 * A * xm / PI_;
+            const double gm = -2.0 * A * xm * xm, Fm = -4.0 / 3.0 * E * A * xm * xm * xm;
+            const double dmax = 2.0 * A * pow(0.9 * n * h, 2) - 0.5 * PI_ * B * 0.9 * n * h;
+            mdr_table_f64 t64;
+            mdr_table_f32 t32;
+            mdr_table_q31 tq;
+            for (i = 0; i <= 800; i++) {
+                r[i] = n * h * i / 800.0;
+                f[i] = A * r[i] * r[i] - B * r[i];
+                rf[i] = (float)r[i], ff[i] = (float)f[i];
+            }
+            assert_int_equal(mdr_table_init_gap_f64(&t64, nodes64, n, r, f, 801), MDR_OK);
+            assert_int_equal(mdr_table_init_gap_f32(&t32, nodes32, n, rf, ff, 801), MDR_OK);
+            assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+            assert_true(t64.node[1].g < 0.0); /* falls node to node: spring 0 keeps its turn */
+            for (ctl = 0; ctl < 2; ctl++) {
+                const double u = ctl ? 1.5 * Fm : 1.5 * gm;
+                mdr_engine_f64 e;
+                mdr_engine_f32 e32;
+                mdr_engine_q31 q;
+                mdr_step_f64 o;
+                mdr_step_f32 o32;
+                mdr_step_q31 oq;
+                assert_int_equal(mdr_engine_init_f64(&e, &t64, E, 0.0, 0.0, 0), MDR_OK);
+                assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, 0.0f, 0.0f, 0), MDR_OK);
+                assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, 0.0, 0.0, 0), MDR_OK);
+                for (i = 1; i <= 50; i++) {
+                    assert_int_equal(mdr_engine_step_d_f64(&e, dmax * i / 50, &o), MDR_OK);
+                    assert_int_equal(mdr_engine_step_d_f32(&e32, (float)(dmax * i / 50), &o32), MDR_OK);
+                    assert_int_equal(mdr_engine_step_d_q31(&q, mdr_q31_in(&q, MDR_Q_D, (float)(dmax * i / 50)), &oq),
+                                     MDR_OK);
+                }
+                assert_true(e.contact && e32.contact && q.a > 0);
+                if (ctl) {
+                    assert_int_equal(mdr_engine_step_F_f64(&e, u, &o), MDR_OK);
+                    assert_int_equal(mdr_engine_step_F_f32(&e32, (float)u, &o32), MDR_OK);
+                    assert_int_equal(mdr_engine_step_F_q31(&q, mdr_q31_in(&q, MDR_Q_F, (float)u), &oq), MDR_OK);
+                } else {
+                    assert_int_equal(mdr_engine_step_d_f64(&e, u, &o), MDR_OK);
+                    assert_int_equal(mdr_engine_step_d_f32(&e32, (float)u, &o32), MDR_OK);
+                    assert_int_equal(mdr_engine_step_d_q31(&q, mdr_q31_in(&q, MDR_Q_D, (float)u), &oq), MDR_OK);
+                }
+                if (o.event != MDR_EV_PULL_OFF || o32.event != MDR_EV_PULL_OFF || oq.event != MDR_EV_PULL_OFF) {
+                    printf("  N %u x_m %.2f h, %s: events f64 %d f32 %d q31 %d\n", n, xm / h, ctl ? "load" : "grips",
+                           o.event, o32.event, oq.event);
+                }
+                assert_int_equal(o.event, MDR_EV_PULL_OFF);
+                assert_int_equal(o32.event, MDR_EV_PULL_OFF);
+                assert_int_equal(oq.event, MDR_EV_PULL_OFF);
+                assert_int_equal(o.jumps + o32.jumps + oq.jumps, 3);
+                rel_le(o.a0, xm, 0, TOL_X64, "dimple: a at the fold (f64)");
+                rel_le(o.d0, gm, 0, TOL_X64, "dimple: d at the fold (f64)");
+                rel_le(o.F0, Fm, 0, TOL_X64, "dimple: F at the fold (f64)");
+                rel_le(o32.a0, xm, 0, TOL_X32, "dimple: a at the fold (f32)");
+                rel_le(o32.d0, gm, 0, TOL_X32, "dimple: d at the fold (f32)");
+                rel_le(o32.F0, Fm, 0, TOL_X32, "dimple: F at the fold (f32)");
+                {
+                    const double a0 = mdr_q31_out(&q, MDR_Q_A, oq.a0);
+                    rel_le(a0, xm, q.L, 16.0 * LSB, /* 32 LSB of Q1.30 */ "dimple: a at the fold (q31, 32 LSB of L)");
+                    rel_le(mdr_q31_out(&q, MDR_Q_F, oq.F0), Fm, q.F0, 2.0 * LSB, "dimple: F at the fold (q31, 2 LSB)");
+                    rel_le(mdr_q31_out(&q, MDR_Q_D, oq.d0), gm, q.D0, (2.0 * n * h / xm + 2.0) * LSB,
+                           "dimple: d at the fold (q31, 2 L/a + 2 LSB)");
+                }
+            }
+        }
+    }
 }
 
 /* Machine control: the pull-off equals the foundation's critical state for
@@ -1690,6 +1790,7 @@ int main(void)
         cmocka_unit_test(paraboloid_pull_off),
         cmocka_unit_test(grips_pull_off_f32),
         cmocka_unit_test(pull_off_inside_spring_0),
+        cmocka_unit_test(dimple_pull_off_in_spring_0),
         cmocka_unit_test(jump_in_inside_spring_0),
         cmocka_unit_test(load_to_zero_without_adhesion),
         cmocka_unit_test(paraboloid_machine),
