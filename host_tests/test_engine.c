@@ -1702,6 +1702,13 @@ static void engine_errors(void **st)
     assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, -JW, 0), MDR_E_PARAM);
     assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, 0, -1.0), MDR_E_CONTROL);
     assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, 0, INFINITY), MDR_E_NONFINITE);
+    /* a machine beyond the arithmetic: 2E* / k_m (kappa) or 1/k_m not
+     * finite (k_m subnormal), refused as the scene refuses it (the shared
+     * mdr_e_material), the instance untouched */
+    keep = e;
+    assert_int_equal(mdr_engine_init_f64(&e, &t64, JE, JW, 0, 1e-305), MDR_E_CONTROL);
+    assert_int_equal(mdr_engine_init_f64(&e, &t64, 1e-300, 0, 0, 1e-310), MDR_E_CONTROL);
+    assert_memory_equal(&e, &keep, sizeof e);
     /* w / E* beyond the range (c_w = sqrt(2 pi w / E*) infinite): refused,
      * as mdr_contact_init refuses it, in both arithmetics and for w_adv */
     keep = e;
@@ -1721,6 +1728,8 @@ static void engine_errors(void **st)
         assert_int_equal(mdr_contact_init_f32(&cf, MDR_PROFILE_PARABOLOID, pf, 1e-38f, 3e38f), MDR_E_PARAM);
         assert_int_equal(mdr_engine_init_f32(&e32, &t32, 1e-38f, 3e38f, 0, 0), MDR_E_PARAM);
         assert_int_equal(mdr_engine_init_f32(&e32, &t32, 1e-38f, 3e38f, 3e38f, 0), MDR_E_PARAM);
+        assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)JE, (float)JW, 0, 1e-38f), MDR_E_CONTROL);
+        assert_int_equal(mdr_engine_init_f32(&e32, &t32, 1e-30f, 0, 0, 1e-39f), MDR_E_CONTROL);
         assert_memory_equal(&e32, &k32, sizeof e32);
     }
     bad = t64;

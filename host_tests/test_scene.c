@@ -575,6 +575,10 @@ static void scene_errors(void **state)
     before = s;
     assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e6f, 0.05f, 0.05f, 1e-38f, 0, NULL), MDR_E_CONTROL);
     assert_memory_equal(&s, &before, sizeof s);
+    /* and 1/k_m beyond float (k_m = 1e-39, subnormal) where 2E* / k_m is not
+     * (E* = 1e-30): the engines' shared machine check (mdr_e_material) */
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 1e-6f, 1e-30f, 0.0f, 0.0f, 1e-39f, 0, NULL), MDR_E_CONTROL);
+    assert_memory_equal(&s, &before, sizeof s);
     assert_int_equal(mdr_scene_init_contact_f32(&s, NULL, 0.0f, 0.0f, 0, NULL), MDR_E_NULL);
     assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_SPHERE, sp, 1e6f, 0.05f), MDR_OK);
     assert_int_equal(mdr_scene_init_contact_f32(&s, &c, 0.0f, 0.0f, 0, NULL), MDR_E_KIND);
