@@ -643,6 +643,76 @@ static void scene_z_range(void **state)
     assert_memory_equal(&s, &k, sizeof s);
 }
 
+/* A machine so soft that F/k_m cancels d: an AFM-like paraboloid (R =
+ * 10 um, E* = 1 MPa, w = 0.05) through k_m = 1e-3 ... 1e-32 N/m, z up to
+ * 1e-7 m and back to -1e-6 m. The state's F is known to ~eps 2E* a d
+ * (2.8e-13 N in f32 here), so d + F/k_m knew z to that over k_m: the f32
+ * scene reported z 1.2 % off at k_m = 1e-3 and z = d (5.7e-7 m for a
+ * control of 1e-7) at 1e-20 (a helper's attack, stop 48). z is the control
+ * of step_z and is reported as given: every tick of the scenes (f32, f64)
+ * and the spring engines (1024 springs, f32 and f64) returns z exactly,
+ * F = k_m (z - d) to TOL_32 of the JKR pull-off force 1.5 pi w R (measured
+ * below 2e-7), and the f32 d within TOL_32 of the f64 scene's. */
+static void scene_z_soft_machine(void **state)
+{
+    static mdr_node_f32 n32[MDR_TABLE_NODES(1024)];
+    static mdr_node_f64 n64[MDR_TABLE_NODES(1024)];
+    static const double kms[] = {1e-3, 1e-12, 1e-20, 1e-32};
+    const double Rs = 1e-5, Es = 1e6, Ws = 0.05, Fs = 1.5 * M_PI * Ws * Rs;
+    const double pd[3] = {Rs, 0, 0};
+    const float pf[3] = {(float)Rs, 0, 0};
+    mdr_contact_f64 c64;
+    mdr_contact_f32 c32;
+    mdr_table_f64 t64;
+    mdr_table_f32 t32;
+    double ef = 0, ed = 0, dmax = 0;
+    int k, i;
+    (void)state;
+    assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_PARABOLOID, pd, Es, Ws), MDR_OK);
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, (float)Es, (float)Ws), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f64(&t64, n64, 1024, &c64, 5e-6), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f32(&t32, n32, 1024, &c32, 5e-6f), MDR_OK);
+    for (k = 0; k < 4; k++) {
+        const double km = kms[k];
+        mdr_scene_f64 s64;
+        mdr_scene_f32 s32;
+        mdr_engine_f64 e64;
+        mdr_engine_f32 e32;
+        assert_int_equal(mdr_scene_init_paraboloid_f64(&s64, Rs, Es, Ws, Ws / 2, km, MDR_OUT_ALL, NULL), MDR_OK);
+        assert_int_equal(
+            mdr_scene_init_paraboloid_f32(&s32, (float)Rs, (float)Es, (float)Ws, (float)Ws / 2, (float)km, MDR_OUT_ALL, NULL),
+            MDR_OK);
+        assert_int_equal(mdr_engine_init_f64(&e64, &t64, Es, Ws, Ws / 2, km), MDR_OK);
+        assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)Es, (float)Ws, (float)Ws / 2, (float)km), MDR_OK);
+        for (i = 0; i <= 400; i++) {
+            const double z = i <= 100 ? 1e-7 * i / 100 : 1e-7 - 1.1e-6 * (i - 100) / 300;
+            const float zf = (float)z;
+            mdr_step_f64 o[2];
+            mdr_step_f32 q[2];
+            int j;
+            assert_int_equal(mdr_scene_step_z_f64(&s64, z, &o[0]), MDR_OK);
+            assert_int_equal(mdr_engine_step_z_f64(&e64, z, &o[1]), MDR_OK);
+            assert_int_equal(mdr_scene_step_z_f32(&s32, zf, &q[0]), MDR_OK);
+            assert_int_equal(mdr_engine_step_z_f32(&e32, zf, &q[1]), MDR_OK);
+            for (j = 0; j < 2; j++) {
+                if (o[j].z != z || q[j].z != zf) {
+                    printf("  k_m %g tick %d %s: z %.9g (f64), %.9g (f32) for %.9g\n", km, i, j ? "engine" : "scene",
+                           o[j].z, (double)q[j].z, z);
+                }
+                assert_true(o[j].z == z && q[j].z == zf);
+                ef = fmax(ef, fabs(o[j].F - km * (z - o[j].d)) / Fs);
+                ef = fmax(ef, fabs((double)q[j].F - km * ((double)zf - (double)q[j].d)) / Fs);
+                rel_le(o[j].F, km * (z - o[j].d), Fs, TOL_32, "soft machine: F = k_m (z - d) (f64)");
+                rel_le(q[j].F, km * ((double)zf - (double)q[j].d), Fs, TOL_32, "soft machine: F = k_m (z - d) (f32)");
+                dmax = fmax(dmax, fabs(o[0].d));
+            }
+            ed = fmax(ed, fabs((double)q[0].d - o[0].d));
+        }
+    }
+    printf("  soft machine: z as given, F - k_m (z - d) %.2g of 1.5 pi w R, f32 d %.2g of max|d|\n", ef, ed / dmax);
+    rel_le(ed, 0.0, dmax, TOL_32, "soft machine: f32 d against f64");
+}
+
 /* ------------------------------------------------ scene_machine_sweep */
 
 /* The f32 scene against the f64 scene through a machine (step_z) over
@@ -1503,6 +1573,7 @@ int main(void)
         cmocka_unit_test(scene_errors),
         cmocka_unit_test(scene_hertz_scale),
         cmocka_unit_test(scene_z_range),
+        cmocka_unit_test(scene_z_soft_machine),
         cmocka_unit_test(scene_machine_sweep),
 #if MDR_CFG_Q31
         cmocka_unit_test(scene_q31_vs_f64),

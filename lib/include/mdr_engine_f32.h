@@ -142,7 +142,7 @@ typedef struct {
 /** What one step did. All SI; "before"/"after" describe the last jump of
  *  the step and equal the final state when there was none. */
 typedef struct {
-    float z;       /**< d + F/k_m (d without a machine) [m] */
+    float z;       /**< d + F/k_m (d without a machine; the control as given by a step_z) [m] */
     float d;       /**< indentation [m] */
     float F;       /**< force [N]; 0 when separated */
     float a;       /**< contact radius [m]; 0 when separated */

@@ -142,7 +142,7 @@ typedef struct {
 /** What one step did. All SI; "before"/"after" describe the last jump of
  *  the step and equal the final state when there was none. */
 typedef struct {
-    double z;       /**< d + F/k_m (d without a machine) [m] */
+    double z;       /**< d + F/k_m (d without a machine; the control as given by a step_z) [m] */
     double d;       /**< indentation [m] */
     double F;       /**< force [N]; 0 when separated */
     double a;       /**< contact radius [m]; 0 when separated */

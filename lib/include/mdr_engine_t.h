@@ -124,7 +124,7 @@ typedef struct {
 /** What one step did. All SI; "before"/"after" describe the last jump of
  *  the step and equal the final state when there was none. */
 typedef struct {
-    MDR_T z;       /**< d + F/k_m (d without a machine) [m] */
+    MDR_T z;       /**< d + F/k_m (d without a machine; the control as given by a step_z) [m] */
     MDR_T d;       /**< indentation [m] */
     MDR_T F;       /**< force [N]; 0 when separated */
     MDR_T a;       /**< contact radius [m]; 0 when separated */
