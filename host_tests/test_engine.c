@@ -837,6 +837,85 @@ static void non_adhesive_cycle(void **st)
  * event counts. And the flattened tip (w_adv = w, N = 1024): one jump-in,
  * one pull-off, no jump at the node above its rim (the quadratic there
  * had g' = 0 at its end: a turn of the table only, stop 46's extra jump). */
+/* The same for sampled steep tips (a helper's attack, stop 48): f = r^n /
+ * (2 R^(n-1)), n = 3 to 8, 60 and 600 samples to 0.9 R, tables of 128 to
+ * 1024 springs by mdr_table_init_gap, f64 and f32. The samples' model
+ * (profile/mdr_abel.inc) took each interval's curvature from its
+ * neighbours' slopes, which at a steep start (n >= 5) made f' < 0 near r =
+ * 0 and g_1 < 0: false pull-offs and jumps without adhesion at 256 springs
+ * and up. Now no node value falls below the one before, and a w = 0 grips
+ * cycle has one contact, one separation, no other event and no jump. */
+static void no_false_folds_sampled(void **st)
+{
+    static double r[600], f[600];
+    static float rf[600], ff[600];
+    const double E = 1e6, R = 1e-6;
+    long cases = 0;
+    int np, im, N, ar, i;
+    (void)st;
+    for (np = 3; np <= 8; np++) {
+        for (im = 0; im < 2; im++) {
+            const uint16_t m = im ? 600 : 60;
+            for (i = 0; i < m; i++) {
+                r[i] = 0.9 * R * i / (m - 1);
+                f[i] = pow(r[i], np) / (2.0 * pow(R, np - 1));
+                rf[i] = (float)r[i], ff[i] = (float)f[i];
+            }
+            for (N = 128; N <= 1024; N *= 2) {
+                for (ar = 0; ar < 2; ar++) {
+                    mdr_table_f64 t64;
+                    mdr_table_f32 t32;
+                    mdr_engine_f64 e64;
+                    mdr_engine_f32 e32;
+                    int ev[16] = {0}, jumps = 0, falls = 0;
+                    double dmax;
+                    if (ar == 0) {
+                        assert_int_equal(mdr_table_init_gap_f64(&t64, nodes64, (uint16_t)N, r, f, m), MDR_OK);
+                        assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, 0.0, 0.0, 0), MDR_OK);
+                        for (i = 1; i <= N; i++) {
+                            falls += nodes64[i].g < nodes64[i - 1].g;
+                        }
+                        dmax = nodes64[(int)(0.8 * N)].g;
+                    } else {
+                        assert_int_equal(mdr_table_init_gap_f32(&t32, nodes32, (uint16_t)N, rf, ff, m), MDR_OK);
+                        assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, 0.0f, 0.0f, 0), MDR_OK);
+                        for (i = 1; i <= N; i++) {
+                            falls += nodes32[i].g < nodes32[i - 1].g;
+                        }
+                        dmax = nodes32[(int)(0.8 * N)].g;
+                    }
+                    for (i = 1; i <= 800; i++) {
+                        const double d = i <= 400 ? dmax * i / 400.0 : dmax - 1.1 * dmax * (i - 400) / 400.0;
+                        if (ar == 0) {
+                            mdr_step_f64 o;
+                            assert_int_equal(mdr_engine_step_d_f64(&e64, d, &o), MDR_OK);
+                            ev[o.event & 15]++, jumps += o.jumps;
+                        } else {
+                            mdr_step_f32 o;
+                            assert_int_equal(mdr_engine_step_d_f32(&e32, (float)d, &o), MDR_OK);
+                            ev[o.event & 15]++, jumps += o.jumps;
+                        }
+                    }
+                    if (falls || ev[MDR_EV_CONTACT] != 1 || ev[MDR_EV_SEPARATION] != 1 || jumps) {
+                        printf("  sampled r^%d, %u samples, N %d %s: %d falls, contact %d separation %d pull-off %d "
+                               "jump %d jump-in %d, %d jumps\n",
+                               np, m, N, ar ? "f32" : "f64", falls, ev[MDR_EV_CONTACT], ev[MDR_EV_SEPARATION],
+                               ev[MDR_EV_PULL_OFF], ev[MDR_EV_JUMP], ev[MDR_EV_JUMP_IN], jumps);
+                    }
+                    assert_int_equal(falls, 0);
+                    assert_int_equal(ev[MDR_EV_CONTACT], 1);
+                    assert_int_equal(ev[MDR_EV_SEPARATION], 1);
+                    assert_int_equal(ev[MDR_EV_PULL_OFF] + ev[MDR_EV_JUMP] + ev[MDR_EV_JUMP_IN] + jumps, 0);
+                    cases++;
+                }
+            }
+        }
+    }
+    printf("  no false folds, sampled tips: %ld tables (r^3 .. r^8, 60 and 600 samples, N 128 to 1024, f64 and "
+           "f32)\n",
+           cases);
+}
+
 static void no_false_folds(void **st)
 {
     static const uint16_t ns[] = {2, 8, 64, 1024};
@@ -1809,6 +1888,7 @@ int main(void)
         cmocka_unit_test(energy_jkr_cycle),
         cmocka_unit_test(non_adhesive_cycle),
         cmocka_unit_test(no_false_folds),
+        cmocka_unit_test(no_false_folds_sampled),
         cmocka_unit_test(wavy_seed_fig_4_9),
         cmocka_unit_test(flat_punch_wall),
         cmocka_unit_test(rims_on_nodes),
