@@ -41,14 +41,14 @@
  * The q31 scene (mdr_scene_q31.h), made from the f64 scene, against it at
  * the same (quantised) control over whole cycles of the paraboloid, the
  * cone and the power law n = 3 under each control:
- *   TOL_Q31_LSB = 256 LSB of Q2.29 in d and F (measured 157.4, d of the
- *     paraboloid under load; 1.8 to 11.8 under fixed grips: the large errors
+ *   TOL_Q31_LSB = 256 LSB of Q2.29 in d and F (measured 109.7, d of the
+ *     cone under load; 95.6 the paraboloid's; 1.8 to 11.8 under fixed grips: the large errors
  *     are d in the last ticks before a pull-off under load or a soft
  *     machine, where the edge is ill-conditioned: U' -> 0 at the fold, so a
  *     rounding of U of one LSB moves tau by ~sqrt(2 LSB/U''));
- *     TOL_Q31_GRIPS = 24 LSB under fixed grips (measured 11.8, n = 3);
+ *     TOL_Q31_GRIPS = 24 LSB under fixed grips (measured 8.5, n = 8);
  *     relative to the cycle's max|F| and max|d|, TOL_Q31_REL = 3e-5
- *     (measured 1.02e-5, d of the paraboloid under load); the same event
+ *     (measured 6.2e-6, d of the paraboloid under load); the same event
  *     codes at the same ticks, one completed cycle each, dissipated energy
  *     within TOL_Q31_EN = 1e-5 relative (measured 1.4e-6);
  *   TOL_Q31_JKR = 1 LSB of F0 (measured 0.1): its pull-off forces against
