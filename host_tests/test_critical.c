@@ -220,6 +220,34 @@ static void starts_are_hints(void **st)
         assert_int_equal(mdr_critical_f32(&cf, MDR_CONTROL_GRIPS, 0, 1e6f, &of), MDR_E_RADIUS);
         assert_true(untouched(&o, sizeof o) && untouched(&of, sizeof of));
     }
+    {
+        /* a sampled cone (tan 0.3, 10 samples to 0.9 um, E* 1 MPa, w 0.05)
+         * whose load pull-off lies beyond its samples: sqrt(a*) = 3 c_w /
+         * (pi tan) with c_w = sqrt(2 pi w/E*), a* = 3.0 um (the cone's
+         * F = E* (pi/2) tan a^2 - 2 E* c_w a^(3/2)), so every start is
+         * unstable under load and none reaches a stable state: MDR_E_RADIUS
+         * from anywhere, also one ulp below the last sample (there c came
+         * back to c(start) to rounding, and the search peeled to a = 0
+         * with MDR_OK: a helper's attack, stop 49) */
+        static double r[10], sl[9];
+        mdr_contact_f64 c;
+        mdr_critstate_f64 o;
+        const double t3 = tan(0.3), cw = sqrt(2 * M_PI * 0.05 / 1e6), as = pow(3 * cw / (M_PI * t3), 2);
+        for (int i = 0; i < 10; i++) {
+            r[i] = 0.9e-6 * i / 9;
+        }
+        for (int i = 0; i < 9; i++) {
+            sl[i] = (t3 * r[i + 1] - t3 * r[i]) / (r[i + 1] - r[i]);
+        }
+        assert_true(as > 3 * r[9]);
+        assert_int_equal(mdr_contact_init_table_f64(&c, r, sl, 10, 1e6, 0.05), MDR_OK);
+        const double starts[] = {r[9], nextafter(r[9], 0), 0.5 * r[9], 0.1 * r[9], 1e-3 * r[9]};
+        for (size_t i = 0; i < sizeof starts / sizeof starts[0]; i++) {
+            memset(&o, GUARD, sizeof o);
+            assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_LOAD, 0, starts[i], &o), MDR_E_RADIUS);
+            assert_true(untouched(&o, sizeof o));
+        }
+    }
 }
 
 /* the default start lies on the last stable branch of every control */
