@@ -229,8 +229,10 @@ mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) 
  * @param[in] k_m    machine stiffness [N/m]: finite > 0, or 0 for none
  *                   (then mdr_engine_step_z() returns MDR_E_CONTROL)
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (E, w, w_adv),
- *         MDR_E_CONTROL (k_m < 0, or 2 E* / k_m or 1/k_m not
- *         finite in the arithmetic), MDR_E_SIZE (table header invalid)
+ *         MDR_E_CONTROL (k_m < 0, or (2 E*) / k_m or 1/k_m not
+ *         finite in the arithmetic: 2 E* is formed first, so with a machine
+ *         E* above half the largest value is refused), MDR_E_SIZE (table
+ *         header invalid)
  */
 mdr_status MDR_SFX(mdr_engine_init)(MDR_SFX(mdr_engine) *e, const MDR_SFX(mdr_table) *tab,
                                     MDR_T E, MDR_T w, MDR_T w_adv, MDR_T k_m);

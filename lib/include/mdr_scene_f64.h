@@ -95,7 +95,7 @@ typedef struct {
  * @param[in]  outputs MDR_OUT_* bits (MDR_OUT_FORCE = 0: F and d only)
  * @param[in]  en     energy bookkeeping to keep (zeroed here), or NULL
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (R, E, w, w_adv,
- *         outputs), MDR_E_CONTROL (k_m < 0, or 2 E* / k_m or 1/k_m not finite),
+ *         outputs), MDR_E_CONTROL (k_m < 0, or (2 E*) / k_m or 1/k_m not finite),
  *         MDR_E_OVERFLOW (the scene's units leave the arithmetic's range),
  *         MDR_E_DISABLED (MDR_OUT_EVENTS or an energy struct in a build
  *         without MDR_CFG_EVENTS; the paraboloid removed: mdr_options.h)
