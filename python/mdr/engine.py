@@ -23,7 +23,8 @@ class Run:
     """The result of Engine.run().
 
     z, d, F, a: arrays, one value per tick [m, m, N, m] (z = d + F/k_machine,
-    or d without a machine); event: the MDR_EV_* code of each tick;
+    or d without a machine; under control="machine" in f32 and f64 the
+    control as given, d + F/k_machine to the equilibrium's rounding); event: the MDR_EV_* code of each tick;
     events: list of Event; dissipated: energy dissipated [J] by the cycles
     completed in this run (cycles of them); path, control, steps_per_segment,
     k_machine, arith: what was run."""
