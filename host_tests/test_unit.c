@@ -752,6 +752,46 @@ static void init_errors(void **st)
     assert_string_equal(mdr_status_str(42), "unknown status");
 }
 
+/* Every status and event has its own name: none reads as success ("ok",
+ * "none") or as unknown, no two are the same (the CLI's one-line errors and
+ * the JSON event lists are these names); the codes run from MDR_E_NULL down
+ * to MDR_E_MISFIT, the events from MDR_EV_NONE to MDR_EV_SEPARATION, and the
+ * codes just past either end are unknown. */
+static void status_names(void **st)
+{
+    const char *seen[64];
+    size_t n = 0;
+    (void)st;
+    assert_string_equal(mdr_status_str(MDR_OK), "ok");
+    assert_string_equal(mdr_status_str(MDR_E_MISFIT - 1), "unknown status");
+    assert_string_equal(mdr_status_str(1), "unknown status");
+    for (int c = MDR_E_NULL; c >= MDR_E_MISFIT; c--) {
+        const char *s = mdr_status_str((mdr_status)c);
+        assert_non_null(s);
+        assert_true(strlen(s) > 4);
+        assert_string_not_equal(s, "ok");
+        assert_string_not_equal(s, "unknown status");
+        for (size_t i = 0; i < n; i++) {
+            assert_string_not_equal(s, seen[i]);
+        }
+        seen[n++] = s;
+    }
+    assert_string_equal(mdr_event_str(MDR_EV_NONE), "none");
+    assert_string_equal(mdr_event_str(MDR_EV_SEPARATION + 1u), "unknown event");
+    for (unsigned e = MDR_EV_CONTACT; e <= MDR_EV_SEPARATION; e++) {
+        const char *s = mdr_event_str((uint8_t)e);
+        assert_non_null(s);
+        assert_string_not_equal(s, "none");
+        assert_string_not_equal(s, "unknown event");
+        for (size_t i = 0; i < n; i++) {
+            assert_string_not_equal(s, seen[i]);
+        }
+        seen[n++] = s;
+    }
+    assert_string_equal(mdr_event_str(MDR_EV_PULL_OFF), "pull-off");
+    assert_string_equal(mdr_event_str(MDR_EV_JUMP_IN), "jump-in");
+}
+
 static void call_errors(void **st)
 {
     mdr_contact_f32 c = mk32(MDR_PROFILE_SPHERE, 1, 0, 0, 1, 1);
@@ -845,6 +885,7 @@ int main(void)
         cmocka_unit_test(wavy_phase_of_many_wavelengths),
         cmocka_unit_test(machine_limits),
         cmocka_unit_test(init_errors),
+        cmocka_unit_test(status_names),
         cmocka_unit_test(call_errors),
         cmocka_unit_test(overflow_is_reported),
     };
