@@ -135,9 +135,13 @@
  *     rule, and F_slope within 5 of its errors of the tilt (measured: 16
  *     of 16 answered, the worst 2.1 errors; before the slope was fitted,
  *     16 of 16 answered 11 to 34 errors off).
+ *   a dwell at the top (test_dwell, 100 rows, noise 0.3 %, relaxing 0 and
+ *     5 % of the pull-off): E*, w, w_adv within 3.2 reported errors, 8 of
+ *     10 answered, n_approach the approach's own samples.
  *   (make test-fit-known builds this file with -DMDR_FIT_KNOWN_DEFECTS for
  *     the fit's known, open defects, which fail until fixed: test_known_curved,
- *     a curved baseline, flaw_run's rule.)
+ *     a curved baseline, flaw_run's rule; test_known_coarse_top, coarse
+ *     curves without hysteresis, every answer within 5 reported errors.)
  */
 #include <math.h>
 #include <setjmp.h>
@@ -2108,6 +2112,28 @@ static void test_f32_pinned_offset(void **state)
  * errors of the slope the flaw gave the baseline (0 but for a tilt). */
 
 /* the worst of an answer's two distances from the truth, in its errors */
+/* A helper's engine path as closed-form curves, noise-free: the base
+ * position from -40 nm to 20 nm and back (z0 = 2 um), n samples each way
+ * (the top twice: the approach's last and the retract's first), w_adv = w;
+ * returns the pull-off force through the lever */
+static double span_curve(const jkr_par *p, int n, double *z, double *F)
+{
+    mdr_contact_f64 c;
+    mdr_critstate_f64 cs;
+    double pp[3] = {p->R, 0, 0}, as, z0 = 2e-6;
+    int i;
+    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, pp, p->E, p->w), MDR_OK);
+    assert_int_equal(mdr_default_start_f64(&c, &as), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c, MDR_CONTROL_MACHINE, p->km, as, &cs), MDR_OK);
+    for (i = 0; i < n; i++) {
+        z[i] = z0 - 40e-9 + 60e-9 * i / (n - 1);
+        z[n + i] = z0 + 20e-9 - 60e-9 * i / (n - 1);
+    }
+    assert_int_equal(mdr_fit_model_f64(&c, p->km, z0, 0.0, MDR_FIT_APPROACH, z, (uint32_t)n, F), MDR_OK);
+    assert_int_equal(mdr_fit_model_f64(&c, p->km, z0, 0.0, MDR_FIT_RETRACT, z + n, (uint32_t)n, F + n), MDR_OK);
+    return cs.F;
+}
+
 static double flaw_dev(const jkr_par *p, const mdr_fit_result_f64 *r)
 {
     return fmax(nerr(r->E, p->E, r->E_err), nerr(r->w, p->w, r->w_err));
@@ -2256,6 +2282,154 @@ static void test_known_curved(void **state)
 {
     (void)state;
     flaw_run("curved baseline", flaw_curve, 4, 4, 1e-2, 0, 0);
+}
+
+/* Coarse curves without hysteresis (open, stop 50; found by a helper on
+ * engine curves): regimes[1] through a 2 N/m lever (mu ~ 1.2), w_adv = w,
+ * span_curve's path with n samples a branch and noise sig of the pull-off
+ * force (rows: 51 and 0.3 %, 26 and 0.3 %, 51 and 1 %), 30 seeds each, the
+ * default fit (a pinned top looked for). Where the noise makes the
+ * receding branch's top look straight, the straight start is left out as a
+ * pinned top (noise-free: none), and E*, w come out far beyond their
+ * reported errors; the same curves with every sample (opts.unpinned) stay
+ * within about 3 at 51 samples (measured, rows in order: 30 answered, 7
+ * beyond 3.2 errors, worst 4.4; 26 answered, 16 beyond, worst 25.4; 6
+ * answered, 2 beyond, worst 18.4; unpinned, all 30 answered: worst 2.9,
+ * 7.8 (5 beyond 3.2: 26 samples are few for the model too), 3.6; the
+ * helper's engine curves, 51 samples at 0.3 %: w 0.87 x at 12 errors).
+ * Fails until fixed: every answer within 5 reported errors (the known
+ * defects' rule, docs/fitting.md). */
+static void test_known_coarse_top(void **state)
+{
+    static const struct {
+        int n;
+        double sig;
+    } rows[3] = {{51, 3e-3}, {26, 3e-3}, {51, 1e-2}};
+    jkr_par p = regimes[1];
+    const uint64_t saved = noise_state;
+    mdr_contact_f64 c = paraboloid64(p.R);
+    double worst_all = 0.0;
+    int k;
+    (void)state;
+    p.km = 2.0;
+    noise_state = 0x243f6a8885a308d3ull;
+    for (k = 0; k < 3; k++) {
+        int s, n_ok = 0, n_bad = 0, n_pinned = 0, n_okun = 0, n_badun = 0;
+        double worst = 0.0, worstun = 0.0;
+        for (s = 0; s < 30; s++) {
+            const int n = rows[k].n;
+            const double Fpo = span_curve(&p, n, zs, Fs);
+            mdr_fit_opts_f64 o;
+            mdr_fit_result_f64 r;
+            double dev;
+            int i;
+            for (i = 0; i < 2 * n; i++) {
+                Fs[i] += rows[k].sig * fabs(Fpo) * gauss();
+            }
+            mdr_fit_defaults_f64(&o, p.km);
+            o.unpinned = 1; /* (the same curve with every sample: for comparison) */
+            if (mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)(2 * n), work64, 2 * NMAX, &r) == MDR_OK) {
+                dev = flaw_dev(&p, &r);
+                n_okun++;
+                n_badun += dev > 3.2;
+                worstun = fmax(worstun, dev);
+            }
+            o.unpinned = 0;
+            if (mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)(2 * n), work64, 2 * NMAX, &r) != MDR_OK) {
+                continue;
+            }
+            n_ok++;
+            n_pinned += r.n_pinned > 0;
+            dev = flaw_dev(&p, &r);
+            n_bad += dev > 3.2;
+            worst = fmax(worst, dev);
+        }
+        print_message("coarse curves, no hysteresis, %d samples a branch, noise %g: %d of 30 answered, %d with a "
+                      "pinned top left out, %d beyond 3.2 errors (worst %.1f); unpinned: %d answered, %d beyond 3.2 "
+                      "errors (worst %.1f)\n",
+                      rows[k].n, rows[k].sig, n_ok, n_pinned, n_bad, worst, n_okun, n_badun, worstun);
+        worst_all = fmax(worst_all, worst);
+    }
+    noise_state = saved;
+    assert_true(worst_all <= 5.0);
+}
+#endif
+
+#ifndef MDR_TARGET_TEST
+/* A dwell at the top: DWELL_N rows at the largest z between the approach's
+ * last sample and the retract's first (a piezo held at its turning point,
+ * recorded), rev_curve's scene (regimes[1], w_adv = w) with noise 0.3 % of
+ * the pull-off force, through the 0.2 N/m lever (the rows noise alone)
+ * and a 2 N/m lever (the force relaxing by 5 % of the pull-off over the
+ * dwell, the retract's first sample not), DWELL_SEEDS seeds each, fitted
+ * with the approach. The dwell is one state: the approach ends at its
+ * first row (n_approach the approach's samples), and w_adv comes out
+ * within 3.2 reported errors (the retract's E* and w too), at least 8 of
+ * 10 answered. Measured before the fix (the rows fitted into the
+ * approach, each weighing the top state again; a helper's engine curves):
+ * noise alone w_adv +4 errors, 7.5 at worst, 5 of 18 beyond 3; relaxing,
+ * 8 to 10 errors. Tolerances: 3.2 reported errors (docs/fitting.md's
+ * scatter of the estimates). */
+#define DWELL_N 100
+#define DWELL_PTS 1000
+#define DWELL_SEEDS 10
+static void test_dwell(void **state)
+{
+    const uint64_t saved = noise_state;
+    int k;
+    (void)state;
+    noise_state = 0x13198a2e03707344ull;
+    for (k = 0; k < 2; k++) {
+        jkr_par p = regimes[1];
+        const double creep = k == 0 ? 0.0 : 0.05;
+        mdr_contact_f64 c = paraboloid64(p.R);
+        int s, n_ok = 0;
+        double worst = 0.0;
+        p.km = k == 0 ? 0.2 : 2.0;
+        for (s = 0; s < DWELL_SEEDS; s++) {
+            const int na = DWELL_PTS, nr = DWELL_PTS, n = na + DWELL_N + nr;
+            double Fpo, dev;
+            mdr_fit_opts_f64 o;
+            mdr_fit_result_f64 r;
+            mdr_status st;
+            int i;
+            double Ftop;
+            Fpo = span_curve(&p, na, zs, Fs);
+            Ftop = Fs[na - 1];
+            for (i = 0; i < na + nr; i++) { /* (the curve's noise first: the same with any dwell) */
+                Fs[i] += 3e-3 * fabs(Fpo) * gauss();
+            }
+            for (i = na + nr - 1; i >= na; i--) { /* the retract moved past the dwell */
+                zs[i + DWELL_N] = zs[i];
+                Fs[i + DWELL_N] = Fs[i];
+            }
+            for (i = 0; i < DWELL_N; i++) {
+                zs[na + i] = zs[na - 1];
+                Fs[na + i] = Ftop - creep * fabs(Fpo) * (i + 1) / DWELL_N + 3e-3 * fabs(Fpo) * gauss();
+            }
+            assert_true(zs[na - 1] == zs[na + DWELL_N]); /* (span_curve: the top twice) */
+            mdr_fit_defaults_f64(&o, p.km);
+            o.approach = 1;
+            st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
+            if (st != MDR_OK) {
+                print_message("  dwell, lever %g N/m, seed %d: %s\n", p.km, s, mdr_status_str(st));
+                continue;
+            }
+            n_ok++;
+            assert_int_equal(r.n_approach, na);
+            dev = fmax(flaw_dev(&p, &r), nerr(r.w_adv, p.w, r.w_adv_err));
+            if (dev > 3.2) {
+                print_message("  dwell, lever %g N/m, seed %d: E* %.4g x, w %.4g x, w_adv %.4g x, %.1f errors off\n",
+                              p.km, s, r.E / p.E, r.w / p.w, r.w_adv / p.w, dev);
+            }
+            worst = fmax(worst, dev);
+        }
+        print_message("dwell of %d rows at the top, lever %g N/m, relaxing %g of the pull-off: %d of %d answered, "
+                      "worst %.2f errors\n", DWELL_N, p.km, creep, n_ok, DWELL_SEEDS, worst);
+        assert_true(n_ok >= 8);
+        assert_true(worst <= 3.2);
+    }
+    noise_state = saved;
 }
 #endif
 
@@ -2750,6 +2924,9 @@ int main(void)
         cmocka_unit_test(test_two_point_mc),
 #endif
         cmocka_unit_test(test_approach),
+#ifndef MDR_TARGET_TEST
+        cmocka_unit_test(test_dwell),
+#endif
         cmocka_unit_test(test_tabor),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_jumps),
@@ -2779,6 +2956,7 @@ int main(void)
          * -DMDR_FIT_KNOWN_DEFECTS; docs/fitting.md) */
 #ifdef MDR_FIT_KNOWN_DEFECTS
         cmocka_unit_test(test_known_curved),
+        cmocka_unit_test(test_known_coarse_top),
 #endif
         cmocka_unit_test(test_fit_sweep),
 #ifndef MDR_TARGET_TEST
