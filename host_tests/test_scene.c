@@ -713,6 +713,84 @@ static void scene_z_soft_machine(void **state)
     rel_le(ed, 0.0, dmax, TOL_32, "soft machine: f32 d against f64");
 }
 
+/* z under grips and under load with a machine (k_m > 0): the machine's base
+ * position d + F/k_m of the state reached (the control is d or F, so z
+ * comes from the state, not from the step's input: the providers' own
+ * z, which a machine-controlled step, above, does not read). Scene and
+ * spring engine, f64 and f32, a cycle in and out of contact under each
+ * control; z within 4 eps of |d| + |F/k_m| (one rounding of 1/k_m, the
+ * product and the sum), worked out here from the step's own d and F. */
+static void scene_z_other_controls(void **state)
+{
+    static mdr_node_f32 n32[MDR_TABLE_NODES(256)];
+    static mdr_node_f64 n64[MDR_TABLE_NODES(256)];
+    const double Rs = 1e-5, Es = 1e9, Ws = 0.05, km = 20.0, Fs = 1.5 * M_PI * Ws * Rs;
+    const double D0 = cbrt(M_PI * M_PI * Ws * Ws * Rs / (Es * Es)); /* the JKR depth scale */
+    const double pd[3] = {Rs, 0, 0};
+    const float pf[3] = {(float)Rs, 0, 0};
+    mdr_contact_f64 c64;
+    mdr_contact_f32 c32;
+    mdr_table_f64 t64;
+    mdr_table_f32 t32;
+    double worst = 0.0;
+    int ctl, i, moved = 0;
+    (void)state;
+    assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_PARABOLOID, pd, Es, Ws), MDR_OK);
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, (float)Es, (float)Ws), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f64(&t64, n64, 256, &c64, 5e-6), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f32(&t32, n32, 256, &c32, 5e-6f), MDR_OK);
+    for (ctl = 0; ctl < 2; ctl++) { /* grips, load */
+        mdr_scene_f64 s64;
+        mdr_scene_f32 s32;
+        mdr_engine_f64 e64;
+        mdr_engine_f32 e32;
+        assert_int_equal(mdr_scene_init_paraboloid_f64(&s64, Rs, Es, Ws, Ws / 2, km, MDR_OUT_ALL, NULL), MDR_OK);
+        assert_int_equal(
+            mdr_scene_init_paraboloid_f32(&s32, (float)Rs, (float)Es, (float)Ws, (float)Ws / 2, (float)km, MDR_OUT_ALL, NULL),
+            MDR_OK);
+        assert_int_equal(mdr_engine_init_f64(&e64, &t64, Es, Ws, Ws / 2, km), MDR_OK);
+        assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)Es, (float)Ws, (float)Ws / 2, (float)km), MDR_OK);
+        for (i = 0; i <= 300; i++) {
+            /* grips: d from 0 to 5 D0 and back to -3 D0; load: F from 0 to 10 Fs and back to -1.2 Fs,
+             * past the pull-off (-Fs): separated ticks at the end */
+            const double top = ctl == 0 ? 5.0 * D0 : 10.0 * Fs, bot = ctl == 0 ? -3.0 * D0 : -1.2 * Fs;
+            const double u = i <= 100 ? top * i / 100 : top + (bot - top) * (i - 100) / 200;
+            const float uf = (float)u;
+            mdr_step_f64 o[2];
+            mdr_step_f32 q[2];
+            int j;
+            if (ctl == 0) {
+                assert_int_equal(mdr_scene_step_d_f64(&s64, u, &o[0]), MDR_OK);
+                assert_int_equal(mdr_engine_step_d_f64(&e64, u, &o[1]), MDR_OK);
+                assert_int_equal(mdr_scene_step_d_f32(&s32, uf, &q[0]), MDR_OK);
+                assert_int_equal(mdr_engine_step_d_f32(&e32, uf, &q[1]), MDR_OK);
+            } else {
+                assert_int_equal(mdr_scene_step_F_f64(&s64, u, &o[0]), MDR_OK);
+                assert_int_equal(mdr_engine_step_F_f64(&e64, u, &o[1]), MDR_OK);
+                assert_int_equal(mdr_scene_step_F_f32(&s32, uf, &q[0]), MDR_OK);
+                assert_int_equal(mdr_engine_step_F_f32(&e32, uf, &q[1]), MDR_OK);
+            }
+            for (j = 0; j < 2; j++) {
+                const double z64 = o[j].d + o[j].F / km, sc64 = fabs(o[j].d) + fabs(o[j].F / km);
+                const double z32 = (double)q[j].d + (double)q[j].F / km,
+                             sc32 = fabs((double)q[j].d) + fabs((double)q[j].F / km);
+                const double e64r = sc64 > 0 ? fabs(o[j].z - z64) / (DBL_EPSILON * sc64) : fabs(o[j].z);
+                const double e32r = sc32 > 0 ? fabs((double)q[j].z - z32) / (FLT_EPSILON * sc32) : fabs((double)q[j].z);
+                if (!(e64r <= 4.0 && e32r <= 4.0)) {
+                    printf("  %s, tick %d, %s: z %.17g for d + F/k_m %.17g (f64), %.9g for %.9g (f32)\n",
+                           ctl == 0 ? "grips" : "load", i, j ? "engine" : "scene", o[j].z, z64, (double)q[j].z, z32);
+                }
+                assert_true(e64r <= 4.0 && e32r <= 4.0);
+                worst = fmax(worst, fmax(e64r, e32r));
+                moved += o[j].F != 0.0 && q[j].F != 0.0f;
+            }
+        }
+    }
+    printf("  z under grips and load through a machine: within %.2g eps of |d| + |F/k_m| (%d ticks with a force)\n",
+           worst, moved);
+    assert_true(moved > 400);
+}
+
 /* ------------------------------------------------ scene_machine_sweep */
 
 /* The f32 scene against the f64 scene through a machine (step_z) over
@@ -1574,6 +1652,7 @@ int main(void)
         cmocka_unit_test(scene_hertz_scale),
         cmocka_unit_test(scene_z_range),
         cmocka_unit_test(scene_z_soft_machine),
+        cmocka_unit_test(scene_z_other_controls),
         cmocka_unit_test(scene_machine_sweep),
 #if MDR_CFG_Q31
         cmocka_unit_test(scene_q31_vs_f64),
