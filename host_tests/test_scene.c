@@ -32,6 +32,9 @@
  *     g)/k_m (measured 0.96, f64 1.11; 1.08 before); the same events
  *     but a crossing of the pull-off within TOL_EV = 1e-6 of z_po
  *     (measured: all within 1e-7);
+ *   scene_z_other_controls: z under grips and under load through a
+ *     machine within 4 eps of |d| + |F/k_m| of d + F/k_m from the step's own
+ *     d and F (scene and spring engine, f64 and f32; measured 1.5);
  *   TOL_JKR = 2e-15 (f64): pull-off force under fixed load -1.5 pi w R and
  *     under fixed grips -5/6 pi w R (seed 4.36, 4.38), relative (measured
  *     3.4e-16);
