@@ -646,6 +646,64 @@ static void scene_z_range(void **state)
     assert_memory_equal(&s, &k, sizeof s);
 }
 
+/* One paraboloid scene four ways, for the z tests below: the f64 and f32
+ * scenes and spring engines (on the paraboloid's tables t64, t32), w_adv =
+ * w/2, through a machine k_m */
+typedef struct {
+    mdr_scene_f64 s64;
+    mdr_scene_f32 s32;
+    mdr_engine_f64 e64;
+    mdr_engine_f32 e32;
+} four_ways;
+
+/* the paraboloid's tables of n springs to a_max, f64 and f32 */
+static void four_tables(double Rs, double Es, double Ws, uint16_t n, double amax, mdr_table_f64 *t64,
+                        mdr_node_f64 *n64, mdr_table_f32 *t32, mdr_node_f32 *n32)
+{
+    const double pd[3] = {Rs, 0, 0};
+    const float pf[3] = {(float)Rs, 0, 0};
+    mdr_contact_f64 c64;
+    mdr_contact_f32 c32;
+    assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_PARABOLOID, pd, Es, Ws), MDR_OK);
+    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, (float)Es, (float)Ws), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f64(t64, n64, n, &c64, amax), MDR_OK);
+    assert_int_equal(mdr_table_init_profile_f32(t32, n32, n, &c32, (float)amax), MDR_OK);
+}
+
+static void four_init(four_ways *f, const mdr_table_f64 *t64, const mdr_table_f32 *t32, double Rs, double Es,
+                      double Ws, double km)
+{
+    assert_int_equal(mdr_scene_init_paraboloid_f64(&f->s64, Rs, Es, Ws, Ws / 2, km, MDR_OUT_ALL, NULL), MDR_OK);
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&f->s32, (float)Rs, (float)Es, (float)Ws, (float)Ws / 2, (float)km,
+                                                   MDR_OUT_ALL, NULL),
+                     MDR_OK);
+    assert_int_equal(mdr_engine_init_f64(&f->e64, t64, Es, Ws, Ws / 2, km), MDR_OK);
+    assert_int_equal(mdr_engine_init_f32(&f->e32, t32, (float)Es, (float)Ws, (float)Ws / 2, (float)km), MDR_OK);
+}
+
+/* one tick of control ctl (MDR_CONTROL_*) to u, each way: o[0] and q[0] the
+ * scenes' (f64, f32), o[1] and q[1] the engines' */
+static void four_step(four_ways *f, uint8_t ctl, double u, mdr_step_f64 o[2], mdr_step_f32 q[2])
+{
+    const float uf = (float)u;
+    if (ctl == MDR_CONTROL_GRIPS) {
+        assert_int_equal(mdr_scene_step_d_f64(&f->s64, u, &o[0]), MDR_OK);
+        assert_int_equal(mdr_engine_step_d_f64(&f->e64, u, &o[1]), MDR_OK);
+        assert_int_equal(mdr_scene_step_d_f32(&f->s32, uf, &q[0]), MDR_OK);
+        assert_int_equal(mdr_engine_step_d_f32(&f->e32, uf, &q[1]), MDR_OK);
+    } else if (ctl == MDR_CONTROL_LOAD) {
+        assert_int_equal(mdr_scene_step_F_f64(&f->s64, u, &o[0]), MDR_OK);
+        assert_int_equal(mdr_engine_step_F_f64(&f->e64, u, &o[1]), MDR_OK);
+        assert_int_equal(mdr_scene_step_F_f32(&f->s32, uf, &q[0]), MDR_OK);
+        assert_int_equal(mdr_engine_step_F_f32(&f->e32, uf, &q[1]), MDR_OK);
+    } else {
+        assert_int_equal(mdr_scene_step_z_f64(&f->s64, u, &o[0]), MDR_OK);
+        assert_int_equal(mdr_engine_step_z_f64(&f->e64, u, &o[1]), MDR_OK);
+        assert_int_equal(mdr_scene_step_z_f32(&f->s32, uf, &q[0]), MDR_OK);
+        assert_int_equal(mdr_engine_step_z_f32(&f->e32, uf, &q[1]), MDR_OK);
+    }
+}
+
 /* A machine so soft that F/k_m cancels d: an AFM-like paraboloid (R =
  * 10 um, E* = 1 MPa, w = 0.05) through k_m = 1e-3 ... 1e-32 N/m, z up to
  * 1e-7 m and back to -1e-6 m. The state's F is known to ~eps 2E* a d
@@ -662,41 +720,23 @@ static void scene_z_soft_machine(void **state)
     static mdr_node_f64 n64[MDR_TABLE_NODES(1024)];
     static const double kms[] = {1e-3, 1e-12, 1e-20, 1e-32};
     const double Rs = 1e-5, Es = 1e6, Ws = 0.05, Fs = 1.5 * M_PI * Ws * Rs;
-    const double pd[3] = {Rs, 0, 0};
-    const float pf[3] = {(float)Rs, 0, 0};
-    mdr_contact_f64 c64;
-    mdr_contact_f32 c32;
     mdr_table_f64 t64;
     mdr_table_f32 t32;
     double ef = 0, ed = 0, dmax = 0;
     int k, i;
     (void)state;
-    assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_PARABOLOID, pd, Es, Ws), MDR_OK);
-    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, (float)Es, (float)Ws), MDR_OK);
-    assert_int_equal(mdr_table_init_profile_f64(&t64, n64, 1024, &c64, 5e-6), MDR_OK);
-    assert_int_equal(mdr_table_init_profile_f32(&t32, n32, 1024, &c32, 5e-6f), MDR_OK);
+    four_tables(Rs, Es, Ws, 1024, 5e-6, &t64, n64, &t32, n32);
     for (k = 0; k < 4; k++) {
         const double km = kms[k];
-        mdr_scene_f64 s64;
-        mdr_scene_f32 s32;
-        mdr_engine_f64 e64;
-        mdr_engine_f32 e32;
-        assert_int_equal(mdr_scene_init_paraboloid_f64(&s64, Rs, Es, Ws, Ws / 2, km, MDR_OUT_ALL, NULL), MDR_OK);
-        assert_int_equal(
-            mdr_scene_init_paraboloid_f32(&s32, (float)Rs, (float)Es, (float)Ws, (float)Ws / 2, (float)km, MDR_OUT_ALL, NULL),
-            MDR_OK);
-        assert_int_equal(mdr_engine_init_f64(&e64, &t64, Es, Ws, Ws / 2, km), MDR_OK);
-        assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)Es, (float)Ws, (float)Ws / 2, (float)km), MDR_OK);
+        four_ways f;
+        four_init(&f, &t64, &t32, Rs, Es, Ws, km);
         for (i = 0; i <= 400; i++) {
             const double z = i <= 100 ? 1e-7 * i / 100 : 1e-7 - 1.1e-6 * (i - 100) / 300;
             const float zf = (float)z;
             mdr_step_f64 o[2];
             mdr_step_f32 q[2];
             int j;
-            assert_int_equal(mdr_scene_step_z_f64(&s64, z, &o[0]), MDR_OK);
-            assert_int_equal(mdr_engine_step_z_f64(&e64, z, &o[1]), MDR_OK);
-            assert_int_equal(mdr_scene_step_z_f32(&s32, zf, &q[0]), MDR_OK);
-            assert_int_equal(mdr_engine_step_z_f32(&e32, zf, &q[1]), MDR_OK);
+            four_step(&f, MDR_CONTROL_MACHINE, z, o, q);
             for (j = 0; j < 2; j++) {
                 if (o[j].z != z || q[j].z != zf) {
                     printf("  k_m %g tick %d %s: z %.9g (f64), %.9g (f32) for %.9g\n", km, i, j ? "engine" : "scene",
@@ -729,50 +769,24 @@ static void scene_z_other_controls(void **state)
     static mdr_node_f64 n64[MDR_TABLE_NODES(256)];
     const double Rs = 1e-5, Es = 1e9, Ws = 0.05, km = 20.0, Fs = 1.5 * M_PI * Ws * Rs;
     const double D0 = cbrt(M_PI * M_PI * Ws * Ws * Rs / (Es * Es)); /* the JKR depth scale */
-    const double pd[3] = {Rs, 0, 0};
-    const float pf[3] = {(float)Rs, 0, 0};
-    mdr_contact_f64 c64;
-    mdr_contact_f32 c32;
     mdr_table_f64 t64;
     mdr_table_f32 t32;
     double worst = 0.0;
     int ctl, i, moved = 0;
     (void)state;
-    assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_PARABOLOID, pd, Es, Ws), MDR_OK);
-    assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, (float)Es, (float)Ws), MDR_OK);
-    assert_int_equal(mdr_table_init_profile_f64(&t64, n64, 256, &c64, 5e-6), MDR_OK);
-    assert_int_equal(mdr_table_init_profile_f32(&t32, n32, 256, &c32, 5e-6f), MDR_OK);
+    four_tables(Rs, Es, Ws, 256, 5e-6, &t64, n64, &t32, n32);
     for (ctl = 0; ctl < 2; ctl++) { /* grips, load */
-        mdr_scene_f64 s64;
-        mdr_scene_f32 s32;
-        mdr_engine_f64 e64;
-        mdr_engine_f32 e32;
-        assert_int_equal(mdr_scene_init_paraboloid_f64(&s64, Rs, Es, Ws, Ws / 2, km, MDR_OUT_ALL, NULL), MDR_OK);
-        assert_int_equal(
-            mdr_scene_init_paraboloid_f32(&s32, (float)Rs, (float)Es, (float)Ws, (float)Ws / 2, (float)km, MDR_OUT_ALL, NULL),
-            MDR_OK);
-        assert_int_equal(mdr_engine_init_f64(&e64, &t64, Es, Ws, Ws / 2, km), MDR_OK);
-        assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)Es, (float)Ws, (float)Ws / 2, (float)km), MDR_OK);
+        four_ways f;
+        four_init(&f, &t64, &t32, Rs, Es, Ws, km);
         for (i = 0; i <= 300; i++) {
             /* grips: d from 0 to 5 D0 and back to -3 D0; load: F from 0 to 10 Fs and back to -1.2 Fs,
              * past the pull-off (-Fs): separated ticks at the end */
             const double top = ctl == 0 ? 5.0 * D0 : 10.0 * Fs, bot = ctl == 0 ? -3.0 * D0 : -1.2 * Fs;
             const double u = i <= 100 ? top * i / 100 : top + (bot - top) * (i - 100) / 200;
-            const float uf = (float)u;
             mdr_step_f64 o[2];
             mdr_step_f32 q[2];
             int j;
-            if (ctl == 0) {
-                assert_int_equal(mdr_scene_step_d_f64(&s64, u, &o[0]), MDR_OK);
-                assert_int_equal(mdr_engine_step_d_f64(&e64, u, &o[1]), MDR_OK);
-                assert_int_equal(mdr_scene_step_d_f32(&s32, uf, &q[0]), MDR_OK);
-                assert_int_equal(mdr_engine_step_d_f32(&e32, uf, &q[1]), MDR_OK);
-            } else {
-                assert_int_equal(mdr_scene_step_F_f64(&s64, u, &o[0]), MDR_OK);
-                assert_int_equal(mdr_engine_step_F_f64(&e64, u, &o[1]), MDR_OK);
-                assert_int_equal(mdr_scene_step_F_f32(&s32, uf, &q[0]), MDR_OK);
-                assert_int_equal(mdr_engine_step_F_f32(&e32, uf, &q[1]), MDR_OK);
-            }
+            four_step(&f, ctl == 0 ? MDR_CONTROL_GRIPS : MDR_CONTROL_LOAD, u, o, q);
             for (j = 0; j < 2; j++) {
                 const double z64 = o[j].d + o[j].F / km, sc64 = fabs(o[j].d) + fabs(o[j].F / km);
                 const double z32 = (double)q[j].d + (double)q[j].F / km,

@@ -752,6 +752,21 @@ static void init_errors(void **st)
     assert_string_equal(mdr_status_str(42), "unknown status");
 }
 
+/* s is a name of at least minlen characters, neither `success` ("ok",
+ * "none") nor `unknown`, and none of seen[0..*n); then it is seen too */
+static void name_is_new(const char *s, size_t minlen, const char *success, const char *unknown, const char **seen,
+                        size_t *n)
+{
+    assert_true(s != NULL);
+    assert_true(strlen(s) >= minlen);
+    assert_true(strcmp(s, success) != 0);
+    assert_true(strcmp(s, unknown) != 0);
+    for (size_t i = 0; i < *n; i++) {
+        assert_true(strcmp(s, seen[i]) != 0);
+    }
+    seen[(*n)++] = s;
+}
+
 /* Every status and event has its own name: none reads as success ("ok",
  * "none") or as unknown, no two are the same (the CLI's one-line errors and
  * the JSON event lists are these names); the codes run from MDR_E_NULL down
@@ -766,27 +781,12 @@ static void status_names(void **st)
     assert_string_equal(mdr_status_str(MDR_E_MISFIT - 1), "unknown status");
     assert_string_equal(mdr_status_str(1), "unknown status");
     for (int c = MDR_E_NULL; c >= MDR_E_MISFIT; c--) {
-        const char *s = mdr_status_str((mdr_status)c);
-        assert_true(s != NULL);
-        assert_true(strlen(s) > 4);
-        assert_true(strcmp(s, "ok") != 0);
-        assert_true(strcmp(s, "unknown status") != 0);
-        for (size_t i = 0; i < n; i++) {
-            assert_true(strcmp(s, seen[i]) != 0);
-        }
-        seen[n++] = s;
+        name_is_new(mdr_status_str((mdr_status)c), 5, "ok", "unknown status", seen, &n);
     }
     assert_string_equal(mdr_event_str(MDR_EV_NONE), "none");
     assert_string_equal(mdr_event_str(MDR_EV_SEPARATION + 1u), "unknown event");
     for (unsigned e = MDR_EV_CONTACT; e <= MDR_EV_SEPARATION; e++) {
-        const char *s = mdr_event_str((uint8_t)e);
-        assert_true(s != NULL);
-        assert_true(strcmp(s, "none") != 0);
-        assert_true(strcmp(s, "unknown event") != 0);
-        for (size_t i = 0; i < n; i++) {
-            assert_true(strcmp(s, seen[i]) != 0);
-        }
-        seen[n++] = s;
+        name_is_new(mdr_event_str((uint8_t)e), 4, "none", "unknown event", seen, &n);
     }
     assert_string_equal(mdr_event_str(MDR_EV_PULL_OFF), "pull-off");
     assert_string_equal(mdr_event_str(MDR_EV_JUMP_IN), "jump-in");
