@@ -54,7 +54,9 @@
  *     (measured 2.4 and 1.1); each line prints the table's own budget,
  *     max|dD/dt|/2 + 3 LSB;
  *   the 32-bit rounding shifts (rounding_shifts_32): exactly the 64-bit
- *     chain's values (a change of a value would change the fingerprint);
+ *     chain's values, and a product's rescaling to 32 bits (mdr_q_rs32)
+ *     exactly its low word (a change of a value would change the
+ *     fingerprint);
  *   the adhesion limit MDR_Q31_ADH_LSB (adhesion_limit): the least w that
  *     init accepts, found by bisection, has a JKR pull-off (exact on a
  *     paraboloid's table) of 1 to ADH_FLIP_MAX = 1.05 times the limit
@@ -832,7 +834,7 @@ static void rounding_shifts_32(void **st)
 {
     static const int32_t edge[] = {INT32_MIN, INT32_MIN + 1, INT32_MAX, INT32_MAX - 1, 0, 1, -1, 2, -2, 3, -3,
                                    0x3fffffff, -0x3fffffff, 0x40000001, -0x40000001};
-    uint32_t x = 2463534242u; /* xorshift32 */
+    uint32_t x = 2463534242u, y = 88675123u; /* xorshift32 */
     long i, n = 0;
     (void)st;
     for (i = 0; i < 15 + 64 + 65536; i++) {
@@ -853,6 +855,14 @@ static void rounding_shifts_32(void **st)
             if ((int64_t)mdr_q_rs32v(v, s) != mdr_q_rs(v, s)) {
                 fail_msg("mdr_q_rs32v(%ld, %u) = %ld, mdr_q_rs %lld", (long)v, s, (long)mdr_q_rs32v(v, s),
                          (long long)mdr_q_rs(v, s));
+            }
+        }
+        y ^= y << 13, y ^= y >> 17, y ^= y << 5;
+        for (s = 1; s <= 31; s++) { /* a product's rescaling to 32 bits */
+            const int64_t p = (int64_t)v * (int32_t)y;
+            if ((uint32_t)mdr_q_rs32(p, s) != (uint32_t)(uint64_t)mdr_q_rs(p, s)) {
+                fail_msg("mdr_q_rs32(%lld, %u) = %ld, mdr_q_rs %lld", (long long)p, s, (long)mdr_q_rs32(p, s),
+                         (long long)mdr_q_rs(p, s));
             }
         }
         for (s = 0; s <= 92; s++) { /* (shifts -30 ... 62) */
