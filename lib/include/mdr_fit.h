@@ -41,6 +41,11 @@
 #define MDR_FIT_MIN_POINTS 8
 /** Fewest retract points in contact (up to and with the pull-off point). */
 #define MDR_FIT_MIN_CONTACT 4
+/** Fewest receding points in contact after a pinned top (from its end up
+ *  to and with the pull-off point): near the fold F goes as the square
+ *  root of z - z_fold, and fewer points fitted there answered E* and w up
+ *  to 23 reported errors off (docs/fitting.md). */
+#define MDR_FIT_MIN_RECEDE 16
 /** Fewest free points after the pull-off (they give the baseline). */
 #define MDR_FIT_MIN_FREE 3
 /** A step (pull-off jump) or a force (contact) counts when it exceeds this

@@ -181,7 +181,10 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   MDR_E_KIND (flat punch), MDR_E_SIZE (work_len too small, or n beyond
  *   UINT32_MAX/2);
  *   curves the fit cannot read: MDR_E_FEW (fewer than MDR_FIT_MIN_POINTS
- *   retract points, or fewer than MDR_FIT_MIN_CONTACT in contact),
+ *   retract points, or fewer than MDR_FIT_MIN_CONTACT in contact, or, the
+ *   full fit past a pinned top, fewer than MDR_FIT_MIN_RECEDE receding
+ *   points in contact after it), or, with opts->approach, fewer than
+ *   MDR_FIT_MIN_POINTS approach points),
  *   MDR_E_ORDER (the samples not in time order: z not monotonic within
  *   the retract, or within the approach when it is fitted; z rising to the
  *   last sample, no retract: an approach alone, or a retract reversed; the
@@ -194,7 +197,8 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);
  *   fits that fail: MDR_E_FITCAP (iteration cap, or a pinned top's end not
  *   settled in 8 refits), MDR_E_DEGENERATE (the
- *   data do not determine the parameters: singular equations, or a
+ *   data do not determine the parameters: singular equations (also the
+ *   approach's, opts->approach: no error of w_adv), or a
  *   relative standard error of E* or w of 1 or more, or (full fit, E*'s
  *   above 0.1) a profile of the sum of squares in ln E* that does not rise
  *   by 3 errors within a factor 20 either way; or the two-point

@@ -197,8 +197,9 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False):
         return Error(st, "%s: sample %d (z = %.9g, F = %.9g)" % (where, i, z[i], F[i]), index=i,
                      value=(float(z[i]), float(F[i])))
     hints = {
-        lib.MDR_E_FEW: "the retract (from the largest z on) needs %d points or more, %d of them in contact"
-        % (lib.MDR_FIT_MIN_POINTS, lib.MDR_FIT_MIN_CONTACT),
+        lib.MDR_E_FEW: "the retract (from the largest z on) needs %d points or more, %d of them in contact "
+        "(%d receding in contact after a pinned top; with approach=True the approach %d points)"
+        % (lib.MDR_FIT_MIN_POINTS, lib.MDR_FIT_MIN_CONTACT, lib.MDR_FIT_MIN_RECEDE, lib.MDR_FIT_MIN_POINTS),
         lib.MDR_E_NOCONTACT: "no retract force above the baseline by more than the noise",
         lib.MDR_E_NOPULLOFF: "no pull-off jump followed by free points (the curve must end separated)",
         lib.MDR_E_KIND: "the flat punch cannot be fitted (its pull-off is Kendall's closed form)",
