@@ -615,6 +615,8 @@ static const char usage_main[] =
     "  <profile>:  --profile paraboloid --R R | cone --theta RAD | powerlaw --C C --n N |\n"
     "              flatpunch --a0 A0 | sphere --R R | flattip --R R --b B |\n"
     "              wavy --R R --h H --lambda L | table --file FILE\n"
+    "              (cone: theta is the flank's angle to the sample surface, f = tan(theta) r,\n"
+    "              pi/2 minus a tip's half-angle)\n"
     "  <material>: --E ESTAR [Pa, effective modulus] --w W [J/m^2, work of adhesion]\n"
     "  --arith f32|f64 (default f32; cycle and table also q31)\n"
     "\n"

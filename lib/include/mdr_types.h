@@ -44,7 +44,9 @@ typedef int8_t mdr_status;
 #define MDR_E_RADIUS (-5)
 /** Radial position r outside [0, a). */
 #define MDR_E_POSITION (-6)
-/** Unknown control mode, or machine stiffness k_m not finite and > 0. */
+/** Unknown control mode, or machine stiffness k_m not finite and > 0, or
+ *  out of the engine's range (q31: kappa = 2 E* L / k_m above 2^16, a lever
+ *  far softer than the contact; float: (2 E*) / k_m not finite). */
 #define MDR_E_CONTROL (-7)
 /** An iteration reached its fixed cap without converging. */
 #define MDR_E_NOCONV (-8)

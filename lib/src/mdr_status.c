@@ -14,7 +14,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_KIND: return "unknown profile kind";
     case MDR_E_RADIUS: return "contact radius outside the profile's domain";
     case MDR_E_POSITION: return "radial position outside [0, a)";
-    case MDR_E_CONTROL: return "unknown control mode or machine stiffness not > 0";
+    case MDR_E_CONTROL: return "unknown control mode, or machine stiffness not > 0 or out of range";
     case MDR_E_NOCONV: return "iteration cap reached";
     case MDR_E_SINGULAR: return "quantity is singular at this point";
     case MDR_E_OVERFLOW: return "result overflows the arithmetic";

@@ -71,7 +71,9 @@ class Contact:
 
         mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6)
 
-    Profiles and their parameters [SI]: paraboloid R; cone theta [rad];
+    Profiles and their parameters [SI]: paraboloid R; cone theta [rad] (the
+    flank's angle to the sample surface, f = tan(theta) r: pi/2 minus a
+    tip's half-angle);
     powerlaw C n (f = C r^n); flatpunch a0; sphere R (exact sphere);
     flattip R b (paraboloid flattened for r < b); wavy R h lam (paraboloid
     with a radial waveform of amplitude h, wavelength lam); table r f: a

@@ -18,7 +18,7 @@ TEXT = {
     "MDR_E_KIND": "unknown profile kind",
     "MDR_E_RADIUS": "contact radius outside the profile's domain",
     "MDR_E_POSITION": "radial position outside [0, a)",
-    "MDR_E_CONTROL": "unknown control mode or machine stiffness not > 0",
+    "MDR_E_CONTROL": "unknown control mode, or machine stiffness not > 0 or out of range",
     "MDR_E_SINGULAR": "quantity is singular at this point",
     "MDR_E_OVERFLOW": "result overflows the arithmetic",
     "MDR_E_OUTSIDE": "contact edge beyond the last spring of the table",
@@ -140,6 +140,10 @@ def test_engine_refusals():
     refused("MDR_E_PARAM", mdr.Engine, c, w_adv=0.1, a_max=1e-5)  # w_adv > w
     refused("MDR_E_PARAM", mdr.Engine, c, w_adv=-0.01, a_max=1e-5)
     refused("MDR_E_CONTROL", mdr.Engine, c, k_machine=-1.0, a_max=1e-5)
+    # q31: a lever far softer than the contact, kappa = 2 E* L / k_m above 2^16 (a helper's: the text
+    # named only a stiffness not > 0 before)
+    stiff = mdr.Engine(mdr.Contact("paraboloid", E=2e11, w=0.05, R=1e-6), k_machine=0.01, arith="q31")
+    refused("MDR_E_CONTROL", stiff.run, [0, -1e-9], control="machine", steps_per_segment=10)
     refused("MDR_E_NONFINITE", mdr.Engine, c, k_machine=math.nan, a_max=1e-5)
     refused("MDR_E_NONFINITE", mdr.Engine, c, a_max=math.nan)
     refused("MDR_E_RADIUS", mdr.Engine, mdr.Contact("sphere", R=1e-6, **P), a_max=2e-6)
