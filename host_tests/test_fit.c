@@ -2442,7 +2442,6 @@ static void test_dwell(void **state)
     }
     noise_state = saved;
 }
-#endif
 
 /* w_adv at its bound: a helper's curves without hysteresis (w_adv = w)
  * through a lever stiffer than at the dwell, where the retract's noise
@@ -2566,6 +2565,7 @@ static void test_few_receding(void **state)
     assert_true(n_long >= RECEDE_SEEDS);
     noise_state = saved;
 }
+#endif
 
 /* The same tilts on whole curves in time order (order_curve: regimes[1],
  * NORDER_PTS + NORDER_PTS samples, noise 0.3 %, both branches tilted
