@@ -1483,6 +1483,70 @@ static void rims_on_nodes(void **st)
     assert_true(worst32 <= TOL_RIM32);
 }
 
+/* The flattened tip's f32 pull-off at its rim over spring counts and table
+ * lengths: Kendall's F and d to TOL_RIM32_NODE under fixed grips
+ * (w_adv = 0) and fixed load (w_adv = w), for a helper's case (stop 51:
+ * R = 1 mm, b = 50 um, E* = 1 GPa, w = 0.01; the rim at 0.56 to 0.79 of the
+ * table) and an AFM tip (R = 20 nm, b = 5 nm, E* = 1 GPa, w = 0.05;
+ * 0.42 to 0.5). The fold at the rim is kept as (k, t) in the spring above it, whose
+ * quadratic rises steeply (g ~ sqrt(x - b)); with e = (t^2 - x_k)/h read
+ * one ulp below the node (e = -2.3e-4) the pull-off was 1.2e-4 to 4.9e-4
+ * off, one ulp above it 2.3e-6 to 9.6e-6, growing with N, until e became
+ * (t - t_k)(t + t_k)/h, 0 at the node's own t (mdr_table_float.inc's
+ * mdr_e_at_sp). Measured after: 1.7e-7, a few f32 roundings:
+ * TOL_RIM32_NODE = 1e-6. */
+#define TOL_RIM32_NODE 1e-6
+static void rim_pull_off_f32(void **st)
+{
+    static const uint16_t ns[] = {256, 512, 1024, 2048, 4096};
+    static const struct {
+        float R, b, E, w, L[3];
+        double d_top, F_top, F_bot;
+    } tips[] = {{1e-3f, 5e-5f, 1e9f, 0.01f, {6.3e-5f, 7.1e-5f, 8.9e-5f}, 2e-7, 0.0112, -0.0084},
+                {2e-8f, 5e-9f, 1e9f, 0.05f, {1.0e-8f, 1.1e-8f, 1.2e-8f}, 1.5e-9, 1e-8, -2e-8}};
+    double worst = 0;
+    unsigned i, j, c, m;
+    (void)st;
+    for (m = 0; m < 2; m++) {
+        const double b = tips[m].b, E = tips[m].E, w = tips[m].w;
+        const double Fk = -sqrt(8 * PI_ * b * b * b * E * w), dk = -sqrt(2 * PI_ * b * w / E);
+        const float pf[3] = {tips[m].R, tips[m].b, 0};
+        mdr_contact_f32 cf;
+        assert_int_equal(mdr_contact_init_f32(&cf, MDR_PROFILE_FLATTIP, pf, tips[m].E, tips[m].w), MDR_OK);
+        for (i = 0; i < sizeof ns / sizeof ns[0]; i++) {
+            for (j = 0; j < 3; j++) {
+                mdr_table_f32 t32;
+                assert_int_equal(mdr_table_init_profile_f32(&t32, nodes32, ns[i], &cf, tips[m].L[j]), MDR_OK);
+                for (c = 0; c < 2; c++) {
+                    const bool load = c == 1;
+                    mdr_engine_f32 e32;
+                    mdr_step_f32 po;
+                    double err;
+                    assert_int_equal(mdr_engine_init_f32(&e32, &t32, tips[m].E, tips[m].w, load ? tips[m].w : 0.0f, 0),
+                                     MDR_OK);
+                    if (load) {
+                        assert_true(run32(&e32, MDR_CONTROL_LOAD, 0, tips[m].F_top, 2000, &po) == 0);
+                        assert_true(run32(&e32, MDR_CONTROL_LOAD, tips[m].F_top, tips[m].F_bot, 2000, &po));
+                    } else {
+                        assert_true(run32(&e32, MDR_CONTROL_GRIPS, 0, tips[m].d_top, 2000, &po) == 0);
+                        assert_true(run32(&e32, MDR_CONTROL_GRIPS, tips[m].d_top, -tips[m].d_top, 2000, &po));
+                    }
+                    err = fmax(fabs(po.F0 - Fk) / fabs(Fk), fabs(po.d0 - dk) / fabs(dk));
+                    worst = fmax(worst, err);
+                    if (err > TOL_RIM32_NODE) {
+                        print_message("tip %u, N = %u, x_max = %g, %s: %.2e\n", m, ns[i], (double)tips[m].L[j],
+                                      load ? "load" : "grips", err);
+                    }
+                    assert_true(err <= TOL_RIM32_NODE);
+                }
+            }
+        }
+    }
+    print_message("flattened tips' f32 pull-off at the rim, 2 tips x 5 spring counts x 3 lengths x 2 controls: "
+                  "worst %.2e against Kendall\n",
+                  worst);
+}
+
 /* ------------------------------------------------------ tabulated tips */
 
 /* A paraboloid sampled at uneven radii: the piecewise-quadratic f is exact,
@@ -1928,6 +1992,7 @@ int main(void)
         cmocka_unit_test(wavy_seed_fig_4_9),
         cmocka_unit_test(flat_punch_wall),
         cmocka_unit_test(rims_on_nodes),
+        cmocka_unit_test(rim_pull_off_f32),
         cmocka_unit_test(gap_spike_below_first_node),
         cmocka_unit_test(gap_table_exact_for_quadratic),
         cmocka_unit_test(gap_table_order),

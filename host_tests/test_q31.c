@@ -333,6 +333,52 @@ static void coarse_tables_lsb(void **st)
     printf("    worst: %.1f LSB, pull-off %.1f LSB (tolerance %.0f)\n", worst[0], worst[1], TOL_LSB);
 }
 
+/* The flattened tip's pull-off at its rim (test_engine's
+ * rim_pull_off_f32: R = 1 mm, b = 50 um, E* = 1 GPa, w = 0.01) over spring
+ * counts 256, 1024, 4096 and two table lengths (the rim at 0.2 and 0.26 of
+ * the table: a shorter one is refused at 2048 springs, the spring above
+ * the rim too steep for Q3.28, MDR_E_OVERFLOW), under fixed grips and
+ * fixed load: q31 against the f64 engine on the same table, TOL_LSB
+ * (measured 1.0). The f32 engine's fold there was 4.9e-4 off (e read one
+ * ulp below the node, in the steep spring above it; test_engine
+ * rim_pull_off_f32); q31's x = t^2 rounds to 2^-30 of L, and its error at
+ * the rim is an LSB of its force format (1.9e-5 of Kendall's F where F0 is
+ * 5 000 times the pull-off force or more, mdr cycle's default --a-max:
+ * docs/accuracy.md). */
+static mdr_node_f64 nf_rim[MDR_TABLE_NODES(4096)];
+static mdr_node_q31 nq_rim[MDR_TABLE_NODES(4096)];
+static void rim_pull_off_lsb(void **state)
+{
+    static const uint16_t ns[] = {256, 1024, 4096};
+    static const double Ls[] = {1.9e-4, 2.5e-4};
+    scene sc = {"flattened tip, 1 mm", "flattip1mm", {MDR_PROFILE_FLATTIP, {1e-3, 5e-5, 0}, 1e9, 0.01}, 0, 0,
+                GOAL_FLATTIP, 2.5e-3};
+    double worst = 0;
+    size_t i, j;
+    int ctl;
+    (void)state;
+    for (i = 0; i < sizeof ns / sizeof ns[0]; i++) {
+        for (j = 0; j < sizeof Ls / sizeof Ls[0]; j++) {
+            mdr_table_f64 t64;
+            mdr_table_q31 tq;
+            sc.L = Ls[j];
+            assert_int_equal(scene_table_f64(&sc, &t64, nf_rim, ns[i]), MDR_OK);
+            assert_int_equal(mdr_table_q31_from_f64(&tq, nq_rim, &t64), MDR_OK);
+            for (ctl = (int)MDR_CONTROL_LOAD; ctl <= (int)MDR_CONTROL_GRIPS; ctl++) {
+                const result r = cycle(&sc, &t64, &tq, ctl);
+                char what[128];
+                worst = fmax(worst, r.dPo);
+                snprintf(what, sizeof what, "rim pull-off q31 - f64 [N %u, L %g, %s]", ns[i], Ls[j],
+                         ctl == (int)MDR_CONTROL_LOAD ? "load" : "grips");
+                err_le(r.dPo, TOL_LSB, what);
+            }
+        }
+    }
+    printf("  flattened tip's rim pull-off, 3 spring counts x 2 lengths x 2 controls: q31 - f64 at most %.1f LSB "
+           "(tolerance %.0f)\n",
+           worst, TOL_LSB);
+}
+
 /* The two jumps that cross the table, known from init (the engine's u_min,
  * t_in, k_in, t_fold, u_fold, k_fold: the first touch's landing, a
  * pull-off's end of contact, the retraction branch's outermost fold),
@@ -1001,6 +1047,7 @@ int main(void)
         cmocka_unit_test(scenes_vs_ref),
         cmocka_unit_test(coarse_tables_lsb),
         cmocka_unit_test(coarse_tables_first_eq),
+        cmocka_unit_test(rim_pull_off_lsb),
         cmocka_unit_test(rounding_shifts_32),
 #endif
     };
