@@ -242,6 +242,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     double tF = 0, td = 0; /* the most tensile force along the path, and its depth */
     int rc = CLI_SFX(make_table)(A, &tab, &nodes);
     mdr_status st;
+    bool adh;
     char *list = NULL;
     size_t llen = 0, lcap = 0;
     double dissipated;
@@ -269,10 +270,22 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         st = CLI_SFX(mdr_engine_init)(&eng, &tab, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv,
                                       (CLI_T)A->k_m);
     }
-    if (A->q31 && st == MDR_E_PARAM &&
-        CLI_SFX(mdr_engine_init)(&eng, &tab, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv, (CLI_T)A->k_m) == MDR_OK) {
-        /* the material is valid (the float engine takes it): the q31 init
-         * refused an adhesion its formats do not resolve (MDR_Q31_ADH_LSB) */
+    /* MDR_E_PARAM of a valid material (0 <= w_adv <= w, and the float
+     * engine takes it without adhesion): an adhesion the arithmetic does not
+     * resolve on this table, named as such */
+    adh = st == MDR_E_PARAM && A->w_adv >= 0 && A->w_adv <= A->w &&
+          CLI_SFX(mdr_engine_init)(&eng, &tab, (CLI_T)A->E, (CLI_T)0, (CLI_T)0, (CLI_T)A->k_m) == MDR_OK;
+    if (adh && !A->q31) { /* (MDR_ENGINE_ADH_COND) */
+        free(nodes);
+        fprintf(stderr,
+                "mdr: engine (--springs, --a-max, table to %.6g m): the pull-off lies so deep inside the first of %u "
+                "springs, or its force is so small, that this arithmetic does not resolve it to 1/%d; use more "
+                "springs, a lower --a-max%s (status %d)\n",
+                (double)tab.h * (double)tab.n, (unsigned)tab.n, MDR_ENGINE_ADH_COND,
+                CLI_F64 ? "" : ", or --arith f64", (int)st);
+        return 2;
+    }
+    if (adh) { /* q31 (MDR_Q31_ADH_LSB) */
         free(qnodes);
         free(nodes);
         fprintf(stderr,

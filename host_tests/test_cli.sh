@@ -564,5 +564,15 @@ refuse '^mdr: engine \(--E, --w, --w-adv, --k-machine\)' cycle --profile parabol
 out=$("$MDR" cycle $P --a-max 5e-3 --arith f64 --summary "$TMP/s.json" 2>/dev/null) && grep -q '"event": "jump-in"' "$TMP/s.json" &&
     ok || bad "the same table in f64: a jump-in"
 
+# a float table whose first spring is ~1e4 pull-off radii wide (E* = 1e35 Pa:
+# the pull-off at 1e-5 of spring 0, where f32 rounds it to 1e-2):
+# refused, named by its cause; f64 resolves it
+P="--profile paraboloid --R 1e-6 --E 1e35 --w 0.05 --control grips --path 0,1e-9,-1e-9 --steps-per-segment 5"
+refuse '^mdr: engine \(--springs, --a-max, table to 3.95285e-08 m\): the pull-off lies so deep inside the first of 1024 springs' \
+    cycle $P
+refuse '^mdr: engine \(--E, --w, --w-adv, --k-machine\)' cycle $P --w-adv 0.06
+out=$("$MDR" cycle $P --arith f64 2>&1 >/dev/null) && [ "$(key "$out" pull_off_F)" = "-1.3089969389752541e-07" ] &&
+    ok || bad "the same scene in f64: pull-off -(5/6) pi w R ($out)"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

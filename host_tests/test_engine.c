@@ -82,7 +82,11 @@
  *     8.7e-15, 1.3e-6); q31 a0 to 32 LSB of L (the fold's radius is
  *     ill-conditioned: U is flat there; measured 13.3), F0 to 2 LSB of F0
  *     (measured 0.82), d0 to 2 L/a0 + 2 LSB of D0 (under load
- *     d = (F/(2E*) + G)/a: G's LSB grows by L/a; measured 0.5 L/a0).
+ *     d = (F/(2E*) + G)/a: G's LSB grows by L/a; measured 0.5 L/a0);
+ *   the adhesion a float engine resolves (adhesion_resolved_float): an
+ *     accepted init pulls off within TOL_ADH = 1/MDR_ENGINE_ADH_COND of
+ *     the closed form (paraboloid) or of the f64 engine (cone); a refusal
+ *     only where the closed form's bound exceeds TOL_ADH/4.
  */
 #include <float.h>
 #include <math.h>
@@ -1547,6 +1551,153 @@ static void rim_pull_off_f32(void **st)
                   worst);
 }
 
+/* The adhesion a float engine resolves (MDR_ENGINE_ADH_COND; the init's
+ * adh_resolved, mdr_table_float.inc). A paraboloid R = 1 um, w = 0.05 on
+ * 64 and 1 024 springs to 40 nm, E* from 1e12 Pa up in steps of 10^0.5
+ * (f32) or 10 (f64) to the arithmetic's range: either init refuses
+ * (MDR_E_PARAM) or the pull-off under grips and under load is within
+ * TOL_ADH = 1/MDR_ENGINE_ADH_COND of -(5/6) pi w R and -(3/2) pi w R. The
+ * pull-off moves into spring 0 as E* grows (a_c = (pi w R^2/(8 E*))^(1/3)
+ * under grips), where the spring's quadratic cancels to about 2u/e of
+ * itself at e = a_c/h (u = the unit roundoff): before the check, f32 was
+ * 5.7e-3 off at E* = 1e32 and 0.1 at 1e36, f64 2.3x too small at 1e65
+ * and tensile at 1e70. A refusal only where that closed-form bound is
+ * above TOL_ADH/4 (not a premature one), every larger E* refused too, and
+ * both seen in each sweep (pressed under load to 1e-6 N, past the
+ * pull-off's radius: a receding contact that never reached it pulls off
+ * from its pinned edge, at another force). A cone (0.3 rad) in f32, whose pull-off force
+ * under load in engine units, F/(2E*), falls below FLT_MIN (a subnormal:
+ * 1e-2 off at 1e21, F = 0 at 1e22): each E* from 1e9 in decades either
+ * refused or within TOL_ADH of the f64 engine's pull-off on the same
+ * path, and refused from 1e22 on. Measured: paraboloid f32 refused from
+ * E* = 3.2e29 on 1 024 springs (1e26 on 64), worst accepted 4.9e-4; f64
+ * from 1e56 (1e52), worst 2.2e-4; cone refused from 1e19, worst 1.1e-6. */
+#define TOL_ADH (1.0 / MDR_ENGINE_ADH_COND)
+static int adh_run64(const mdr_table_f64 *t, double E, uint8_t ctl, double F_top, double *F0)
+{
+    mdr_engine_f64 e;
+    mdr_step_f64 po;
+    const bool load = ctl == MDR_CONTROL_LOAD;
+    const mdr_status st = mdr_engine_init_f64(&e, t, E, JW, 0, 0);
+    if (st != MDR_OK) {
+        assert_int_equal(st, MDR_E_PARAM);
+        return 0;
+    }
+    assert_true(run64(&e, ctl, 0, load ? F_top : 5e-10, 200, &po, NULL) == 0);
+    assert_true(run64(&e, ctl, load ? F_top : 5e-10, load ? -5e-7 : -5e-10, 400, &po, NULL));
+    *F0 = po.F0;
+    return 1;
+}
+
+static int adh_run32(const mdr_table_f32 *t, double E, uint8_t ctl, double F_top, double *F0)
+{
+    mdr_engine_f32 e;
+    mdr_step_f32 po;
+    const bool load = ctl == MDR_CONTROL_LOAD;
+    const mdr_status st = mdr_engine_init_f32(&e, t, (float)E, (float)JW, 0, 0);
+    if (st != MDR_OK) {
+        assert_int_equal(st, MDR_E_PARAM);
+        return 0;
+    }
+    assert_true(run32(&e, ctl, 0, load ? F_top : 5e-10, 200, &po) == 0);
+    assert_true(run32(&e, ctl, load ? F_top : 5e-10, load ? -5e-7 : -5e-10, 400, &po));
+    *F0 = po.F0;
+    return 1;
+}
+
+static void adhesion_resolved_float(void **st)
+{
+    static const uint16_t ns[] = {64, 1024};
+    const double R = 1e-6, L = 40e-9, Fg = -5.0 / 6.0 * PI_ * JW * R, Fl = -1.5 * PI_ * JW * R;
+    double worst[2] = {0, 0}, cone = 0;
+    unsigned i, m;
+    (void)st;
+    for (m = 0; m < 2; m++) { /* 0: f32, 1: f64 */
+        const double u = m == 0 ? TOL_U32 : DBL_EPSILON / 2, top = m == 0 ? 3e38 : 1e300;
+        for (i = 0; i < 2; i++) {
+            int refused = 0, accepted = 0;
+            double E;
+            mdr_contact_f64 c64;
+            mdr_contact_f32 c32;
+            mdr_table_f64 t64;
+            mdr_table_f32 t32;
+            const double pd[3] = {R, 0, 0};
+            const float pf[3] = {(float)R, 0, 0};
+            assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_PARABOLOID, pd, 1.0, 0.0), MDR_OK);
+            assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pf, 1.0f, 0.0f), MDR_OK);
+            assert_int_equal(mdr_table_init_profile_f64(&t64, nodes64, ns[i], &c64, L), MDR_OK);
+            assert_int_equal(mdr_table_init_profile_f32(&t32, nodes32, ns[i], &c32, (float)L), MDR_OK);
+            for (E = 1e12; E < top; E *= m == 0 ? sqrt(10.0) : 10.0) {
+                const double e = cbrt(PI_ * JW * R * R / (8 * E)) / (L / ns[i]), bound = 2 * u / e;
+                double Fgot, Flot;
+                const int okg = m == 0 ? adh_run32(&t32, E, MDR_CONTROL_GRIPS, 0, &Fgot)
+                                       : adh_run64(&t64, E, MDR_CONTROL_GRIPS, 0, &Fgot);
+                const int okl = m == 0 ? adh_run32(&t32, E, MDR_CONTROL_LOAD, 1e-6, &Flot)
+                                       : adh_run64(&t64, E, MDR_CONTROL_LOAD, 1e-6, &Flot);
+                assert_int_equal(okg, okl); /* (one init decides both) */
+                if (!okg) {
+                    if (!(bound > TOL_ADH / 4)) {
+                        print_message("%s, %u springs, E* = %g: refused, bound %.2e\n", m ? "f64" : "f32", ns[i], E,
+                                      bound);
+                    }
+                    assert_true(bound > TOL_ADH / 4);
+                    if (!refused) {
+                        print_message("%s, %u springs: refused from E* = %.2g (e = %.2e)\n", m ? "f64" : "f32",
+                                      ns[i], E, e);
+                    }
+                    refused = 1;
+                    continue;
+                }
+                assert_false(refused); /* every E* above a refused one refused */
+                accepted = 1;
+                worst[m] = fmax(worst[m], fmax(fabs(Fgot / Fg - 1), fabs(Flot / Fl - 1)));
+                if (!(fabs(Fgot / Fg - 1) <= TOL_ADH && fabs(Flot / Fl - 1) <= TOL_ADH)) {
+                    print_message("%s, %u springs, E* = %g: %.2e, %.2e\n", m ? "f64" : "f32", ns[i], E,
+                                  Fgot / Fg - 1, Flot / Fl - 1);
+                }
+                assert_true(fabs(Fgot / Fg - 1) <= TOL_ADH && fabs(Flot / Fl - 1) <= TOL_ADH);
+            }
+            assert_true(refused && accepted);
+        }
+    }
+    {
+        const double pd[3] = {0.3, 0, 0};
+        const float pf[3] = {0.3f, 0, 0};
+        mdr_contact_f64 c64;
+        mdr_contact_f32 c32;
+        mdr_table_f64 t64;
+        mdr_table_f32 t32;
+        double E;
+        int refused = 0;
+        assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_CONE, pd, 1.0, 0.0), MDR_OK);
+        assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_CONE, pf, 1.0f, 0.0f), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f64(&t64, nodes64, 1024, &c64, 40e-9), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f32(&t32, nodes32, 1024, &c32, 40e-9f), MDR_OK);
+        for (E = 1e9; E < 3e38; E *= 10) {
+            uint8_t ctl;
+            for (ctl = MDR_CONTROL_LOAD; ctl <= MDR_CONTROL_GRIPS; ctl++) {
+                double F32, F64;
+                assert_true(adh_run64(&t64, E, ctl, 1e-7, &F64));
+                if (!adh_run32(&t32, E, ctl, 1e-7, &F32)) {
+                    if (!refused) {
+                        print_message("cone, f32: refused from E* = %.2g\n", E);
+                    }
+                    refused = 1;
+                    continue;
+                }
+                assert_false(refused);
+                assert_true(E < 1e22);
+                cone = fmax(cone, fabs(F32 / F64 - 1));
+                assert_true(fabs(F32 / F64 - 1) <= TOL_ADH);
+            }
+        }
+        assert_true(refused);
+    }
+    print_message("resolved adhesion: worst accepted pull-off f32 %.2e, f64 %.2e of the closed form; cone f32 %.2e "
+                  "of f64 (TOL_ADH %.2e)\n",
+                  worst[0], worst[1], cone, TOL_ADH);
+}
+
 /* ------------------------------------------------------ tabulated tips */
 
 /* A paraboloid sampled at uneven radii: the piecewise-quadratic f is exact,
@@ -1993,6 +2144,7 @@ int main(void)
         cmocka_unit_test(flat_punch_wall),
         cmocka_unit_test(rims_on_nodes),
         cmocka_unit_test(rim_pull_off_f32),
+        cmocka_unit_test(adhesion_resolved_float),
         cmocka_unit_test(gap_spike_below_first_node),
         cmocka_unit_test(gap_table_exact_for_quadratic),
         cmocka_unit_test(gap_table_order),

@@ -36,6 +36,15 @@
 /** Bytes of node storage for n springs, per arithmetic. */
 #define MDR_TABLE_BYTES_F32(n) (MDR_TABLE_NODES(n) * sizeof(mdr_node_f32))
 #define MDR_TABLE_BYTES_F64(n) (MDR_TABLE_NODES(n) * sizeof(mdr_node_f64))
+/** The adhesion a float engine resolves (f32, f64; w > 0): init refuses
+ *  (MDR_E_PARAM) a table on which a pull-off lies so deep inside the first
+ *  spring that the spring's quadratic gives g there only to a relative
+ *  rounding bound above 1/MDR_ENGINE_ADH_COND (on a profile flat at 0,
+ *  2 eps/e at the fraction e of the spring: a first spring more than
+ *  about 2^10 / eps pull-off radii wide; the pull-off force is off by 0.3
+ *  to 0.6 of that bound). More springs or a smaller table length resolve
+ *  it; q31's own limit is MDR_Q31_ADH_LSB. */
+#define MDR_ENGINE_ADH_COND 1024
 /** Fewest points of a tabulated gap profile r_i, f(r_i). */
 #define MDR_TABLE_MIN_POINTS 3
 

@@ -228,7 +228,9 @@ mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) 
  *                   (0: non-adhesive loading; w: reversible JKR)
  * @param[in] k_m    machine stiffness [N/m]: finite > 0, or 0 for none
  *                   (then mdr_engine_step_z() returns MDR_E_CONTROL)
- * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (E, w, w_adv),
+ * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (E, w, w_adv;
+ *         or, with w > 0, a pull-off so deep inside the table's first
+ *         spring that it is not resolved: MDR_ENGINE_ADH_COND),
  *         MDR_E_CONTROL (k_m < 0, or (2 E*) / k_m or 1/k_m not
  *         finite in the arithmetic: 2 E* is formed first, so with a machine
  *         E* above half the largest value is refused), MDR_E_SIZE (table

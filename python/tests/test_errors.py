@@ -147,6 +147,11 @@ def test_engine_refusals():
     refused("MDR_E_NONFINITE", mdr.Engine, c, k_machine=math.nan, a_max=1e-5)
     refused("MDR_E_NONFINITE", mdr.Engine, c, a_max=math.nan)
     refused("MDR_E_RADIUS", mdr.Engine, mdr.Contact("sphere", R=1e-6, **P), a_max=2e-6)
+    # an adhesion the arithmetic does not resolve on the table (MDR_ENGINE_ADH_COND): the pull-off at
+    # 1e-5 of the first spring in f32, where its quadratic rounds the force to 1e-2; f64 resolves it
+    absurd = mdr.Contact("paraboloid", R=1e-6, E=1e35, w=0.05)
+    refused("MDR_E_PARAM", mdr.Engine, absurd, arith="f32", a_max=4e-8)
+    mdr.Engine(absurd, arith="f64", a_max=4e-8)
     with pytest.raises(TypeError):
         mdr.Engine(c, springs=2.5)
     with pytest.raises(TypeError):
