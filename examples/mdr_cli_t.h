@@ -85,6 +85,13 @@ static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab
     }
     st = CLI_SFX(mdr_table_init_profile)(tab, *nodes, n, &c, a_max);
     free(keep);
+    if (st == MDR_E_OVERFLOW) {
+        fprintf(stderr,
+                "mdr: --a-max: the table's values leave this arithmetic's range, above it or so far below it that "
+                "the springs' curvature terms lose their digits%s (status %d)\n",
+                CLI_F64 ? "" : "; --arith f64 reaches further", (int)st);
+        return 2;
+    }
     if (st != MDR_OK) {
         return cli_fail("--a-max", st);
     }

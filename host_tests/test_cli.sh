@@ -573,6 +573,13 @@ refuse '^mdr: engine \(--springs, --a-max, table to 3.95285e-08 m\): the pull-of
 refuse '^mdr: engine \(--E, --w, --w-adv, --k-machine\)' cycle $P --w-adv 0.06
 out=$("$MDR" cycle $P --arith f64 2>&1 >/dev/null) && [ "$(key "$out" pull_off_F)" = "-1.3089969389752541e-07" ] &&
     ok || bad "the same scene in f64: pull-off -(5/6) pi w R ($out)"
+# a table so small that its springs' curvature terms are subnormal (f32:
+# every q flushed to 0, the grips pull-off 4.7e-3 off before): refused at
+# the table, named; f64 takes it
+P="--profile paraboloid --R 1e-2 --E 1.78e21 --w 1e-15 --control grips --springs 256 --a-max 8.4e-14 --path 0,1.6e-25,-1e-24 --steps-per-segment 50"
+refuse '^mdr: --a-max: the table.s values leave this arithmetic.s range, .* curvature terms lose their digits; --arith f64' cycle $P
+out=$("$MDR" cycle $P --arith f64 2>&1 >/dev/null) && awk -v F="$(key "$out" pull_off_F)" 'BEGIN { r = F / (-5 / 6 * 3.141592653589793 * 1e-15 * 1e-2) - 1; exit !(r * r < 1e-20) }' &&
+    ok || bad "the same table in f64: pull-off -(5/6) pi w R ($out)"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

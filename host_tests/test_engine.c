@@ -1698,6 +1698,134 @@ static void adhesion_resolved_float(void **st)
                   worst[0], worst[1], cone, TOL_ADH);
 }
 
+/* Tables at the bottom of the arithmetic's range (a helper's attack, stop
+ * 52): a paraboloid with w = 1e-15 J/m^2, R = 1 cm on 256 springs and
+ * R = 1 um on 1 024, tabulated to 4 a_c (a_c the grips pull-off radius),
+ * E* from 1e3 Pa up in steps of 10^0.5 (f32 to 1e38, f64 to 1e300): the
+ * table is refused (MDR_E_OVERFLOW, mdr_table.inc: a curvature term that
+ * matters, q ~ h |Dg_{i+1} - Dg_i|/12, below the smallest normal number,
+ * or G not normal down to eps of its largest), or the engine
+ * (MDR_E_PARAM, adhesion_resolved_float), or the pull-off under grips and
+ * load is within TOL_ADH of the closed forms. Before the table's check,
+ * f32 at R = 1 cm, E* = 1.8e21 Pa stored every q_i as 0 (g piecewise
+ * linear): the grips fold sat on a node, 4.7e-3 off; at R = 1 um,
+ * E* = 1e32 every G was 0 too: F = 0 and no pull-off. Both a table
+ * refusal and an accurate pull-off are seen in each sweep. Measured:
+ * tables refused from E* = 3.2e14 (f32, R = 1 cm), 1e9 (f32, 1 um: there
+ * q = h^3/(6R) is subnormal), 1e276 and 1e272 (f64, G); worst accepted
+ * 5.5e-6 (f32), 1.8e-14 (f64). */
+static void tiny_tables_float(void **st)
+{
+    static const struct {
+        double R;
+        uint16_t n;
+    } cs[] = {{1e-2, 256}, {1e-6, 1024}};
+    const double w = 1e-15;
+    double worst[2] = {0, 0};
+    unsigned i, m;
+    (void)st;
+    for (m = 0; m < 2; m++) {
+        for (i = 0; i < 2; i++) {
+            const double R = cs[i].R, Fg = -5.0 / 6.0 * PI_ * w * R, Fl = -1.5 * PI_ * w * R;
+            int tab_refused = 0, accepted = 0;
+            double E, tab_from = 0;
+            for (E = 1e3; E < (m == 0 ? 3e38 : 1e300); E *= m == 0 ? sqrt(10.0) : 10.0) {
+                const double ac = cbrt(PI_ * w * R * R / (8 * E)), dc = ac * ac / R;
+                double Fgot = 0, Flot = 0, errg, errl;
+                mdr_status sg, sl;
+                if (m == 0) {
+                    mdr_contact_f32 c;
+                    mdr_table_f32 t;
+                    mdr_engine_f32 e[2];
+                    mdr_step_f32 po;
+                    const float p[3] = {(float)R, 0, 0};
+                    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, p, 1.0f, 0.0f), MDR_OK);
+                    sg = mdr_table_init_profile_f32(&t, nodes32, cs[i].n, &c, (float)(4 * ac));
+                    if (sg != MDR_OK) { /* (MDR_E_RADIUS: x_max itself subnormal) */
+                        assert_true(sg == MDR_E_OVERFLOW || sg == MDR_E_RADIUS);
+                        tab_from = tab_refused ? tab_from : E;
+                        tab_refused = 1;
+                        continue;
+                    }
+                    sg = mdr_engine_init_f32(&e[0], &t, (float)E, (float)w, 0, 0);
+                    sl = mdr_engine_init_f32(&e[1], &t, (float)E, (float)w, 0, 0);
+                    assert_int_equal(sg, sl);
+                    if (sg != MDR_OK) {
+                        assert_int_equal(sg, MDR_E_PARAM);
+                        continue;
+                    }
+                    assert_true(run32(&e[0], MDR_CONTROL_GRIPS, 0, 3 * dc, 200, &po) == 0);
+                    assert_true(run32(&e[0], MDR_CONTROL_GRIPS, 3 * dc, -6 * dc, 400, &po));
+                    Fgot = po.F0;
+                    assert_true(run32(&e[1], MDR_CONTROL_LOAD, 0, -2 * Fl, 200, &po) == 0);
+                    assert_true(run32(&e[1], MDR_CONTROL_LOAD, -2 * Fl, 2 * Fl, 400, &po));
+                    Flot = po.F0;
+                } else {
+                    mdr_contact_f64 c;
+                    mdr_table_f64 t;
+                    mdr_engine_f64 e[2];
+                    mdr_step_f64 po;
+                    const double p[3] = {R, 0, 0};
+                    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_PARABOLOID, p, 1.0, 0.0), MDR_OK);
+                    sg = mdr_table_init_profile_f64(&t, nodes64, cs[i].n, &c, 4 * ac);
+                    if (sg != MDR_OK) { /* (MDR_E_RADIUS: x_max itself subnormal) */
+                        assert_true(sg == MDR_E_OVERFLOW || sg == MDR_E_RADIUS);
+                        tab_from = tab_refused ? tab_from : E;
+                        tab_refused = 1;
+                        continue;
+                    }
+                    sg = mdr_engine_init_f64(&e[0], &t, E, w, 0, 0);
+                    sl = mdr_engine_init_f64(&e[1], &t, E, w, 0, 0);
+                    assert_int_equal(sg, sl);
+                    if (sg != MDR_OK) {
+                        assert_int_equal(sg, MDR_E_PARAM);
+                        continue;
+                    }
+                    assert_true(run64(&e[0], MDR_CONTROL_GRIPS, 0, 3 * dc, 200, &po, NULL) == 0);
+                    assert_true(run64(&e[0], MDR_CONTROL_GRIPS, 3 * dc, -6 * dc, 400, &po, NULL));
+                    Fgot = po.F0;
+                    assert_true(run64(&e[1], MDR_CONTROL_LOAD, 0, -2 * Fl, 200, &po, NULL) == 0);
+                    assert_true(run64(&e[1], MDR_CONTROL_LOAD, -2 * Fl, 2 * Fl, 400, &po, NULL));
+                    Flot = po.F0;
+                }
+                accepted = 1;
+                errg = fabs(Fgot / Fg - 1);
+                errl = fabs(Flot / Fl - 1);
+                worst[m] = fmax(worst[m], fmax(errg, errl));
+                if (!(errg <= TOL_ADH && errl <= TOL_ADH)) {
+                    print_message("%s, R = %g, %u springs, E* = %g: grips %.2e, load %.2e\n", m ? "f64" : "f32", R,
+                                  cs[i].n, E, errg, errl);
+                }
+                assert_true(errg <= TOL_ADH && errl <= TOL_ADH);
+            }
+            print_message("%s, R = %g, %u springs: tables refused from E* = %.2g\n", m ? "f64" : "f32", R,
+                          cs[i].n, tab_from);
+            assert_true(tab_refused && accepted);
+        }
+    }
+    print_message("tables at the bottom of the range: worst accepted pull-off f32 %.2e, f64 %.2e\n", worst[0],
+                  worst[1]);
+    { /* a cone (q = 0, exact): its G = (pi/4) tan(theta) x^2 must stay
+         normal down to eps of its largest (f32: G_n >= 2^24 FLT_MIN) */
+        mdr_contact_f32 c;
+        mdr_table_f32 t;
+        const float p[3] = {0.3f, 0, 0};
+        assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_CONE, p, 1.0f, 0.0f), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f32(&t, nodes32, 1024, &c, 1e-14f), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f32(&t, nodes32, 1024, &c, 1e-17f), MDR_E_OVERFLOW);
+    }
+    { /* a paraboloid R = 1 um on 16 384 springs: to 1e-12 m its G is normal
+         (G_n 3.3e-31) but q = h^3/(6R) is 3.8e-44, 5 bits of a subnormal;
+         to 1e-10 m q is 3.8e-38, normal */
+        mdr_contact_f32 c;
+        mdr_table_f32 t;
+        const float p[3] = {1e-6f, 0, 0};
+        assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, p, 1.0f, 0.0f), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f32(&t, nodes32, 16384, &c, 1e-10f), MDR_OK);
+        assert_int_equal(mdr_table_init_profile_f32(&t, nodes32, 16384, &c, 1e-12f), MDR_E_OVERFLOW);
+    }
+}
+
 /* ------------------------------------------------------ tabulated tips */
 
 /* A paraboloid sampled at uneven radii: the piecewise-quadratic f is exact,
@@ -2145,6 +2273,7 @@ int main(void)
         cmocka_unit_test(rims_on_nodes),
         cmocka_unit_test(rim_pull_off_f32),
         cmocka_unit_test(adhesion_resolved_float),
+        cmocka_unit_test(tiny_tables_float),
         cmocka_unit_test(gap_spike_below_first_node),
         cmocka_unit_test(gap_table_exact_for_quadratic),
         cmocka_unit_test(gap_table_order),

@@ -181,7 +181,10 @@ typedef struct {
  *                   one part in k). tab->h n is the extent made; rims in
  *                   spring 0 (b < x_max/n) stay where they are.
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
- *         MDR_E_OVERFLOW (x_max too large for the arithmetic)
+ *         MDR_E_OVERFLOW (x_max too large for the arithmetic, or so small
+ *         that the springs' curvature terms lose their digits:
+ *         h max|g_{i+1} - g_i|/6 below the smallest normal number over the
+ *         unit roundoff, every table)
  */
 mdr_status mdr_table_init_profile_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
                                            uint16_t n, const mdr_contact_f32 *c, float x_max);
@@ -215,7 +218,8 @@ mdr_status mdr_table_init_profile_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
  * @param[in] f  gap f(r_i) [m], finite
  * @param[in] m  points, >= MDR_TABLE_MIN_POINTS
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_TABLE,
- *         MDR_E_OVERFLOW (a table entry beyond the arithmetic's range)
+ *         MDR_E_OVERFLOW (a table entry beyond the arithmetic's range, at
+ *         either end: as mdr_table_init_profile())
  */
 mdr_status mdr_table_init_gap_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
                                        uint16_t n, const float *r, const float *f, uint16_t m);
@@ -230,7 +234,8 @@ mdr_status mdr_table_init_gap_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
  * @param[in] h  spring width [m], finite > 0
  * @param[in] g  n+1 values [m], finite
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_PARAM (h),
- *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range)
+ *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range, or
+ *         h max|g_{i+1} - g_i| too small: as mdr_table_init_profile())
  */
 mdr_status mdr_table_init_g_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
                                      uint16_t n, float h, const float *g);

@@ -163,7 +163,10 @@ typedef struct {
  *                   one part in k). tab->h n is the extent made; rims in
  *                   spring 0 (b < x_max/n) stay where they are.
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
- *         MDR_E_OVERFLOW (x_max too large for the arithmetic)
+ *         MDR_E_OVERFLOW (x_max too large for the arithmetic, or so small
+ *         that the springs' curvature terms lose their digits:
+ *         h max|g_{i+1} - g_i|/6 below the smallest normal number over the
+ *         unit roundoff, every table)
  */
 mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                            uint16_t n, const MDR_SFX(mdr_contact) *c, MDR_T x_max);
@@ -197,7 +200,8 @@ mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_
  * @param[in] f  gap f(r_i) [m], finite
  * @param[in] m  points, >= MDR_TABLE_MIN_POINTS
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_TABLE,
- *         MDR_E_OVERFLOW (a table entry beyond the arithmetic's range)
+ *         MDR_E_OVERFLOW (a table entry beyond the arithmetic's range, at
+ *         either end: as mdr_table_init_profile())
  */
 mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                        uint16_t n, const MDR_T *r, const MDR_T *f, uint16_t m);
@@ -212,7 +216,8 @@ mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node
  * @param[in] h  spring width [m], finite > 0
  * @param[in] g  n+1 values [m], finite
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_PARAM (h),
- *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range)
+ *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range, or
+ *         h max|g_{i+1} - g_i| too small: as mdr_table_init_profile())
  */
 mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                      uint16_t n, MDR_T h, const MDR_T *g);
