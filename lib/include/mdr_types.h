@@ -53,7 +53,9 @@ typedef int8_t mdr_status;
 /** The requested quantity is infinite at this point (stress at the tip of a
  *  cone or of a power law with n <= 1, at the rim r = b of a flattened tip). */
 #define MDR_E_SINGULAR (-9)
-/** A result would overflow the arithmetic's range (no inf or NaN escapes). */
+/** A result would overflow the arithmetic's range (no inf or NaN escapes),
+ *  or a spring table lies so far below it that its values lose their
+ *  digits (curvature terms or integrals not normal numbers). */
 #define MDR_E_OVERFLOW (-10)
 /** The contact edge would move past the last spring of the table (the
  *  engine's state is left as it was and MDR_FLAG_OUTSIDE is set). */
