@@ -182,9 +182,10 @@ typedef struct {
  *                   spring 0 (b < x_max/n) stay where they are.
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
  *         MDR_E_OVERFLOW (x_max too large for the arithmetic, or so small
- *         that the springs' curvature terms lose their digits:
- *         h max|g_{i+1} - g_i|/6 below the smallest normal number over the
- *         unit roundoff, every table)
+ *         that the table's values lose their digits, every table: a
+ *         curvature term that matters, q ~ h |Dg_{i+1} - Dg_i|/12, below
+ *         the smallest normal number, or max |G| below it over the unit
+ *         roundoff)
  */
 mdr_status mdr_table_init_profile_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
                                            uint16_t n, const mdr_contact_f32 *c, float x_max);
@@ -234,8 +235,8 @@ mdr_status mdr_table_init_gap_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
  * @param[in] h  spring width [m], finite > 0
  * @param[in] g  n+1 values [m], finite
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_PARAM (h),
- *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range, or
- *         h max|g_{i+1} - g_i| too small: as mdr_table_init_profile())
+ *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range, at
+ *         either end: as mdr_table_init_profile())
  */
 mdr_status mdr_table_init_g_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
                                      uint16_t n, float h, const float *g);

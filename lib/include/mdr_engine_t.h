@@ -164,9 +164,10 @@ typedef struct {
  *                   spring 0 (b < x_max/n) stay where they are.
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
  *         MDR_E_OVERFLOW (x_max too large for the arithmetic, or so small
- *         that the springs' curvature terms lose their digits:
- *         h max|g_{i+1} - g_i|/6 below the smallest normal number over the
- *         unit roundoff, every table)
+ *         that the table's values lose their digits, every table: a
+ *         curvature term that matters, q ~ h |Dg_{i+1} - Dg_i|/12, below
+ *         the smallest normal number, or max |G| below it over the unit
+ *         roundoff)
  */
 mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                            uint16_t n, const MDR_SFX(mdr_contact) *c, MDR_T x_max);
@@ -216,8 +217,8 @@ mdr_status MDR_SFX(mdr_table_init_gap)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node
  * @param[in] h  spring width [m], finite > 0
  * @param[in] g  n+1 values [m], finite
  * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_PARAM (h),
- *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range, or
- *         h max|g_{i+1} - g_i| too small: as mdr_table_init_profile())
+ *         MDR_E_TABLE (g[0] != 0), MDR_E_OVERFLOW (G beyond the range, at
+ *         either end: as mdr_table_init_profile())
  */
 mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) *node,
                                      uint16_t n, MDR_T h, const MDR_T *g);
