@@ -44,6 +44,11 @@ typedef struct {
     MDR_T h;                       /**< spring width [m]: x_i = i*h */
     uint16_t n;                    /**< number of springs */
     uint8_t wall;                  /**< 1: g = +inf beyond x_n (flat punch: the edge stops there) */
+    uint8_t rim0;                  /**< 1: a flat's rim (the flattened tip's b, a sampled profile's
+                                        first kink: g' infinite above it) lies inside spring 0,
+                                        0 < rim < h, where no quadratic spring resolves it; the
+                                        engines' inits refuse an adhesion whose pull-off may lie
+                                        there (MDR_E_PARAM). Set by the table builders. */
 } MDR_SFX(mdr_table);
 
 /** Energy bookkeeping of every engine of this arithmetic: embedded in a
@@ -236,7 +241,9 @@ mdr_status MDR_SFX(mdr_table_init_g)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_node) 
  *                   (then mdr_engine_step_z() returns MDR_E_CONTROL)
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (E, w, w_adv;
  *         or, with w > 0, a pull-off so deep inside the table's first
- *         spring that it is not resolved: MDR_ENGINE_ADH_COND),
+ *         spring that it is not resolved: MDR_ENGINE_ADH_COND; or, on a
+ *         table whose flat's rim lies inside spring 0 (rim0), a pull-off
+ *         that may lie there, docs/accuracy.md),
  *         MDR_E_CONTROL (k_m < 0, or (2 E*) / k_m or 1/k_m not
  *         finite in the arithmetic: 2 E* is formed first, so with a machine
  *         E* above half the largest value is refused), MDR_E_SIZE (table

@@ -89,6 +89,7 @@ typedef struct {
     uint8_t m;                /**< log2(n) */
     uint8_t fb;               /**< fractional bits of the b_i, 30..40 */
     uint8_t wall;             /**< as mdr_table_f32.wall */
+    uint8_t rim0;             /**< as mdr_table_f32.rim0 */
 } mdr_table_q31;
 
 /** The energy bookkeeping of the q31 engine (mdr_energy_f32 in fixed
@@ -229,7 +230,8 @@ mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
  *         mdr_engine_init_f32; or, with w > 0, a table so far beyond the
  *         pull-off radius that the pull-off force under fixed load, over
  *         the table's nodes, is below MDR_Q31_ADH_LSB LSB of F: the
- *         adhesion unresolved), MDR_E_CONTROL
+ *         adhesion unresolved; or a pull-off at a rim inside spring 0,
+ *         the table's rim0, as mdr_engine_init_f32), MDR_E_CONTROL
  *         (k_m < 0 or kappa > 2^16), MDR_E_SIZE (table header invalid),
  *         MDR_E_OVERFLOW (D0 beyond 2^60 Dg, or a unit D0, F0 beyond float
  *         range)

@@ -26,8 +26,9 @@ enum { MDR_M_ROOT, MDR_M_FOLD, MDR_M_END };
 
 #if MDR_CFG_Q31 && MDR_CFG_ENGINE
 /* the q31 engine's landings (mdr_edge_table.inc, in mdr_q31.c), which its
- * float init (engine/mdr_q31_init.inc) calls on the filled instance */
-void mdr_t_landings_q31(mdr_engine_q31 *s);
+ * float init (engine/mdr_q31_init.inc) calls on the filled instance; false:
+ * a pull-off at a rim inside spring 0 (the table's rim0) not excluded */
+bool mdr_t_landings_q31(mdr_engine_q31 *s);
 #endif
 
 #endif /* MDR_MACHINE_H */
