@@ -204,9 +204,9 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
             fprintf(out, "    {%ld, %ld, %ld, %ld, %ld},\n", (long)qn[i].g, (long)qn[i].G, (long)qn[i].t,
                     (long)qn[i].s, (long)qn[i].b);
         }
-        fprintf(out, "};\n\nconst mdr_table_q31 %s = {%s_nodes, %.9ef, %.9ef, %.9ef, %ld, %u, %u, %u, %u};\n",
+        fprintf(out, "};\n\nconst mdr_table_q31 %s = {%s_nodes, %.9ef, %.9ef, %.9ef, %ld, %u, %u, %u, %u, %u};\n",
                 A->name, A->name, (double)tq.L, (double)tq.L_lo, (double)tq.Dg, (long)tq.gmax,
-                (unsigned)tq.n, (unsigned)tq.m, (unsigned)tq.fb, (unsigned)tq.wall);
+                (unsigned)tq.n, (unsigned)tq.m, (unsigned)tq.fb, (unsigned)tq.wall, (unsigned)tq.rim0);
     } else {
         const char *lit = CLI_LIT;
         fprintf(out,
@@ -224,8 +224,8 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
                     (double)nodes[i].g, lit, (double)nodes[i].G, lit, (double)nodes[i].t, lit,
                     (double)nodes[i].q, lit);
         }
-        fprintf(out, "};\n\nconst mdr_table_%s %s = {%s_nodes, " CLI_EFMT "%s, %u, %u};\n", sfx, A->name,
-                A->name, (double)tab.h, lit, (unsigned)tab.n, (unsigned)tab.wall);
+        fprintf(out, "};\n\nconst mdr_table_%s %s = {%s_nodes, " CLI_EFMT "%s, %u, %u, %u};\n", sfx, A->name,
+                A->name, (double)tab.h, lit, (unsigned)tab.n, (unsigned)tab.wall, (unsigned)tab.rim0);
     }
     if (out != stdout && fclose(out) != 0) {
         rc = usage_error("cannot write", A->output);
@@ -282,6 +282,32 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
      * resolve on this table, named as such */
     adh = st == MDR_E_PARAM && A->w_adv >= 0 && A->w_adv <= A->w &&
           CLI_SFX(mdr_engine_init)(&eng, &tab, (CLI_T)A->E, (CLI_T)0, (CLI_T)0, (CLI_T)A->k_m) == MDR_OK;
+    if (adh && tab.rim0) { /* the rim's refusal (mdr_table_f32.rim0), if the same table without it is taken */
+        bool taken;
+        if (A->q31) {
+            mdr_table_q31 q0 = Q.t;
+            mdr_engine_q31 e0;
+            q0.rim0 = 0;
+            taken = CLI_SFX(mdr_engine_init_q31)(&e0, &q0, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv,
+                                                 (CLI_T)A->k_m) == MDR_OK;
+        } else {
+            CLI_SFX(mdr_table) t0 = tab;
+            t0.rim0 = 0;
+            taken = CLI_SFX(mdr_engine_init)(&eng, &t0, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv, (CLI_T)A->k_m) ==
+                    MDR_OK;
+        }
+        if (taken) {
+            free(qnodes);
+            free(nodes);
+            fprintf(stderr,
+                    "mdr: %sengine (--springs, --a-max, table to %.6g m): the flat's rim (--b, or the samples' first "
+                    "kink) lies inside the first of %u springs (%.6g m wide), and the pull-off may lie there, which "
+                    "no spring resolves; use more springs or a lower --a-max, so that a spring is no wider than the "
+                    "rim (status %d)\n",
+                    A->q31 ? "q31 " : "", (double)tab.h * (double)tab.n, (unsigned)tab.n, (double)tab.h, (int)st);
+            return 2;
+        }
+    }
     if (adh && !A->q31) { /* (MDR_ENGINE_ADH_COND) */
         free(nodes);
         fprintf(stderr,

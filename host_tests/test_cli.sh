@@ -581,5 +581,18 @@ refuse '^mdr: --a-max: the table.s values leave this arithmetic.s range, .* curv
 out=$("$MDR" cycle $P --arith f64 2>&1 >/dev/null) && awk -v F="$(key "$out" pull_off_F)" 'BEGIN { r = F / (-5 / 6 * 3.141592653589793 * 1e-15 * 1e-2) - 1; exit !(r * r < 1e-20) }' &&
     ok || bad "the same table in f64: pull-off -(5/6) pi w R ($out)"
 
+# a flat's rim inside spring 0 (b = 0.99 of a spring): its pull-off there is
+# resolved by no spring (f64 pulled off at 3% of Kendall's force before):
+# refused in every arithmetic, named by its cause; with the rim on node 1
+# (90 springs) Kendall's -sqrt(8 pi b^3 E* w)
+P="--profile flattip --R 1e-6 --b 5e-9 --E 1e9 --control grips --a-max 4.5e-7 --path 0,2.1e-10,-4.2e-10 --steps-per-segment 200"
+for ar in f32 f64; do
+    refuse "^mdr: engine \(--springs, --a-max, table to 4.5e-07 m\): the flat.s rim \(--b, or the samples. first kink\) lies inside the first of 89 springs" \
+        cycle $P --w 1e-8 --springs 89 --arith $ar
+done
+refuse "^mdr: q31 engine \(--springs, --a-max, table to 4.5e-07 m\): the flat.s rim" cycle $P --springs 16 --w 1e-3 --arith q31
+out=$("$MDR" cycle $P --w 1e-8 --springs 90 --arith f64 2>&1 >/dev/null) && awk -v F="$(key "$out" pull_off_F)" 'BEGIN { r = F / -sqrt(8 * 3.141592653589793 * 1.25e-25 * 1e9 * 1e-8) - 1; exit !(r * r < 1e-20) }' &&
+    ok || bad "the rim on node 1: Kendall's pull-off ($out)"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -152,6 +152,16 @@ def test_engine_refusals():
     absurd = mdr.Contact("paraboloid", R=1e-6, E=1e35, w=0.05)
     refused("MDR_E_PARAM", mdr.Engine, absurd, arith="f32", a_max=4e-8)
     mdr.Engine(absurd, arith="f64", a_max=4e-8)
+    # a flat's rim inside the first spring (b = 0.99 of it), where the pull-off may lie and no spring
+    # resolves it (f64 pulled off at 3% of Kendall's force before): refused in every arithmetic; with
+    # the rim on node 1 (90 springs) the run goes
+    rim = mdr.Contact("flattip", R=1e-6, b=5e-9, E=1e9, w=1e-8)
+    for ar in ("f32", "f64"):
+        refused("MDR_E_PARAM", mdr.Engine, rim, springs=89, a_max=4.5e-7, arith=ar)
+        mdr.Engine(rim, springs=90, a_max=4.5e-7, arith=ar).run([0, 2.1e-10, -4.2e-10], control="grips",
+                                                                steps_per_segment=20)
+    refused("MDR_E_PARAM", mdr.Engine, mdr.Contact("flattip", R=1e-6, b=5e-9, E=1e9, w=1e-3), springs=16,
+            a_max=4.5e-7, arith="q31")
     with pytest.raises(TypeError):
         mdr.Engine(c, springs=2.5)
     with pytest.raises(TypeError):
