@@ -300,8 +300,8 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             free(qnodes);
             free(nodes);
             fprintf(stderr,
-                    "mdr: %sengine (--springs, --a-max, table to %.6g m): the flat's rim (--b, or the samples' first "
-                    "kink) lies inside the first of %u springs (%.6g m wide), and the pull-off may lie there, which "
+                    "mdr: %sengine (--springs, --a-max, table to %.6g m): the flat's rim (--b, or the samples' flat end or "
+                    "first kink) lies inside the first of %u springs (%.6g m wide), and the pull-off may lie there, which "
                     "no spring resolves; use more springs or a lower --a-max, so that a spring is no wider than the "
                     "rim (status %d)\n",
                     A->q31 ? "q31 " : "", (double)tab.h * (double)tab.n, (unsigned)tab.n, (double)tab.h, (int)st);

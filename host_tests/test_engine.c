@@ -2437,6 +2437,65 @@ static void rim_in_spring0(void **st)
     assert_true(refused > 0 && accepted0 > 0);
 }
 
+/* The same flattened tip sampled (R = 1 um, b = 5 nm, f = 0 to b, then
+ * (r^2 - b^2)/(2R)), its rim on a sample or 0.2, 0.5, 0.65 of an interval
+ * past one, with 1, 2, 3 and 10 intervals on the flat, tabulated on 64
+ * springs to 450 nm (h = 7 nm > b) by mdr_table_init_gap and through the
+ * tabulated contact profile: every table flagged rim0 (the kink test sees
+ * the rim only on a sample with at least 4 flat intervals; the end of the
+ * samples' flat is flagged too: a helper's attack, stop 53, had such a worn
+ * tip pull off at 15% of Kendall's d, exit 0), and the f32 and f64 inits
+ * with w = 1e-8 J/m^2, E* = 1 GPa (the closed forms' pull-off at the rim,
+ * in spring 0) refused. Samples of the paraboloid (no flat) are not flagged. */
+static void rim_in_spring0_sampled(void **st)
+{
+    static const double fr[] = {0, 0.2, 0.5, 0.65};
+    static const double kf[] = {1, 2, 3, 10};
+    static double r[2000], f[2000], sl[2000];
+    static float r32[2000], f32[2000];
+    const double R = 1e-6, b = 5e-9, L = 4.5e-7, E = 1e9, w = 1e-8;
+    unsigned i, j, k, m, par;
+    (void)st;
+    for (par = 0; par < 2; par++) {
+        for (i = 0; i < 4; i++) {
+            for (j = 0; j < 4; j++) {
+                const double dr = b / (kf[i] + fr[j]);
+                mdr_table_f64 t64;
+                mdr_table_f32 t32;
+                mdr_contact_f64 c64;
+                mdr_engine_f64 e64;
+                mdr_engine_f32 e32;
+                double am;
+                m = (unsigned)(L / dr) + 3u;
+                assert_true(m <= 2000u);
+                for (k = 0; k < m; k++) {
+                    r[k] = k * dr;
+                    f[k] = par ? r[k] * r[k] / (2 * R) : r[k] <= b ? 0 : (r[k] * r[k] - b * b) / (2 * R);
+                    r32[k] = (float)r[k];
+                    f32[k] = (float)f[k];
+                }
+                for (k = 0; k + 1 < m; k++) {
+                    sl[k] = (f[k + 1] - f[k]) / (r[k + 1] - r[k]);
+                }
+                assert_int_equal(mdr_table_init_gap_f64(&t64, nodes64, 64, r, f, (uint16_t)m), MDR_OK);
+                assert_int_equal(mdr_table_init_gap_f32(&t32, nodes32, 64, r32, f32, (uint16_t)m), MDR_OK);
+                assert_int_equal(t64.rim0, !par);
+                assert_int_equal(t32.rim0, !par);
+                if (par) {
+                    continue;
+                }
+                assert_true(ft_min(0, R, b, E, w, L, &am) < 0 && am < t64.h); /* the pull-off at the rim */
+                assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, 0, 0), MDR_E_PARAM);
+                assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, 0.0f, 0), MDR_E_PARAM);
+                assert_int_equal(mdr_contact_init_table_f64(&c64, r, sl, (uint16_t)m, 1.0, 0.0), MDR_OK);
+                assert_int_equal(mdr_table_init_profile_f64(&t64, nodes64, 64, &c64, L), MDR_OK);
+                assert_int_equal(t64.rim0, 1);
+                assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, 0, 0), MDR_E_PARAM);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2460,6 +2519,7 @@ int main(void)
         cmocka_unit_test(rim_pull_off_f32),
         cmocka_unit_test(adhesion_resolved_float),
         cmocka_unit_test(rim_in_spring0),
+        cmocka_unit_test(rim_in_spring0_sampled),
         cmocka_unit_test(tiny_tables_float),
         cmocka_unit_test(gap_spike_below_first_node),
         cmocka_unit_test(gap_table_exact_for_quadratic),
