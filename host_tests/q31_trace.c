@@ -239,9 +239,9 @@ static int print_tables(void)
     }
     printf("static const mdr_table_q31 q31_trace_tab[%u] = {\n", (unsigned)NSCENES);
     for (k = 0; k < NSCENES; k++) {
-        printf("    {q31_trace_node%u, %af, %af, %af, %ld, %u, %u, %u, %u},\n", k, (double)tq[k].L,
+        printf("    {q31_trace_node%u, %af, %af, %af, %ld, %u, %u, %u, %u, %u},\n", k, (double)tq[k].L,
                (double)tq[k].L_lo, (double)tq[k].Dg, (long)tq[k].gmax, (unsigned)tq[k].n,
-               (unsigned)tq[k].m, (unsigned)tq[k].fb, (unsigned)tq[k].wall);
+               (unsigned)tq[k].m, (unsigned)tq[k].fb, (unsigned)tq[k].wall, (unsigned)tq[k].rim0);
     }
     printf("};\n");
     return 0;
