@@ -2462,7 +2462,7 @@ static void rim_in_spring0(void **st)
 #define TOL_RIM_SAMPLED10 0.08
 static void rim_in_spring0_sampled(void **st)
 {
-    double worst = 0, worst10 = 0, dd[2];
+    double worst = 0, worst10 = 0;
     static const double fr[] = {0, 0.2, 0.5, 0.65};
     static const double kf[] = {1, 2, 3, 10};
     static double r[2000], f[2000], sl[2000];
@@ -2505,9 +2505,11 @@ static void rim_in_spring0_sampled(void **st)
                 assert_int_equal(mdr_table_init_profile_f64(&t64, nodes64, 64, &c64, L), MDR_OK);
                 assert_int_equal(t64.rim0, 1);
                 assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, 0, 0), MDR_E_PARAM);
+#ifndef MDR_TARGET_TEST /* (1 024-spring tables of the tabulated contact: host only) */
                 /* on 1 024 springs (the rim outside spring 0) the tabulated
                  * contact's table pulls off as the gap table of the same
                  * samples, and with 10 flat intervals near Kendall's d */
+                double dd[2];
                 for (k = 0; k < 2; k++) {
                     mdr_step_f64 po;
                     const double dk = -sqrt(2 * PI_ * b * w / E);
@@ -2518,8 +2520,8 @@ static void rim_in_spring0_sampled(void **st)
                     }
                     assert_int_equal(t64.rim0, 0);
                     assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, 0, 0), MDR_OK);
-                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, 0, 8.87e-10, 2000, &po, NULL) == 0);
-                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, 8.87e-10, -2.0e-11, 20000, &po, NULL));
+                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, 0, 8.87e-10, 400, &po, NULL) == 0);
+                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, 8.87e-10, -2.0e-11, 2000, &po, NULL));
                     dd[k] = po.d0 / dk;
                 }
                 worst = fmax(worst, fabs(dd[1] / dd[0] - 1));
@@ -2532,12 +2534,17 @@ static void rim_in_spring0_sampled(void **st)
                     worst10 = fmax(worst10, fabs(dd[0] - 1));
                     assert_true(fabs(dd[0] - 1) <= TOL_RIM_SAMPLED10);
                 }
+#endif
             }
         }
     }
+#ifndef MDR_TARGET_TEST
     print_message("sampled worn tips on 1 024 springs: tabulated contact against gap table %.3f, 10 flat intervals "
                   "against Kendall %.3f\n",
                   worst, worst10);
+#else
+    (void)worst, (void)worst10;
+#endif
 }
 
 int main(void)
