@@ -266,9 +266,10 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             st = CLI_SFX(mdr_table_q31_from)(&Q.t, qnodes, &tab);
         }
         if (st != MDR_OK) {
+            rc = CLI_SFX(q31_table_fail)(A, &tab, st); /* (reads tab's nodes: before they are freed) */
             free(qnodes);
             free(nodes);
-            return CLI_SFX(q31_table_fail)(A, &tab, st);
+            return rc;
         }
         st = CLI_SFX(mdr_engine_init_q31)(&Q.e, &Q.t, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv,
                                           (CLI_T)A->k_m);
@@ -325,6 +326,21 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
                 "mdr: q31 engine (--a-max, table to %.6g m): the pull-off force is below %d LSB of the q31 force "
                 "unit over a table this far beyond the pull-off radius; lower --a-max or use --arith f32 (status %d)\n",
                 (double)Q.t.L + (double)Q.t.L_lo, MDR_Q31_ADH_LSB, (int)st);
+        return 2;
+    }
+    if (st == MDR_E_CONTROL && A->q31 && A->k_m > 0) {
+        /* the q31 engine's machine range, kappa = 2 E* L / k_m <= 2^16
+         * (mdr_engine_init_q31_f32): named, with what to change (the
+         * generic message said "unknown control mode", helper-21, stop 54) */
+        const double L = (double)Q.t.L + (double)Q.t.L_lo, kap = 2.0 * A->E * L / A->k_m;
+        free(qnodes);
+        free(nodes);
+        fprintf(stderr,
+                "mdr: q31 engine (--k-machine, --E, --a-max): the machine is too soft for q31 on this table: "
+                "kappa = 2 E* L / k_m = %.6g (L = %.6g m, the table) is above 65536: q31 needs --k-machine above "
+                "2 E* L / 65536 = %.6g N/m on this table; raise --k-machine, lower --a-max, or use --arith f32 "
+                "(status %d)\n",
+                kap, L, 2.0 * A->E * L / 65536.0, (int)st);
         return 2;
     }
     if (st != MDR_OK) {

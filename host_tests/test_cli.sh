@@ -490,7 +490,7 @@ $MDR table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --name tipq --ari
     grep -q '^extern const mdr_table_q31 tipq;' "$TMP/tipq.h" && grep -q '^#include "tipq.h"' "$TMP/tipq.c" && ok ||
     bad "table --header writes the header, the .c on stdout includes it"
 ${CC:-cc} -std=c99 -Wall -Wextra -Werror -Ilib/include -I"$TMP" "$TMP/use.c" "$TMP/tipf.c" "$TMP/tipq.c" \
-    "$(dirname "$MDR")/libmdr.a" -lm -o "$TMP/use" && "$TMP/use" && ok || bad "a program using the generated headers links and runs"
+    "$(dirname "$MDR")/libmdr.a" ${MDR_LINK_FLAGS:-} -lm -o "$TMP/use" && "$TMP/use" && ok || bad "a program using the generated headers links and runs"
 refuse 'output names a .c file' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --output "$TMP/x.txt"
 refuse 'cannot write: /nonexistent/t.h' table --profile sphere --R 1e-6 --springs 64 --a-max 5e-7 --header /nonexistent/t.h
 
@@ -550,6 +550,22 @@ refuse '^mdr: q31 table \(--springs must be a power of two\)' table --profile sp
 refuse '^mdr: q31 table: the profile is too steep over the table .*lower --a-max \(9.99e-06 m\), further below the sphere' \
     cycle $S --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 9.99e-6 --arith q31
 refuse '^mdr: q31 table: the profile is too steep over the table' table --profile sphere --R 10e-6 --a-max 9.99e-6 --arith q31
+# (the same at 4 096 and 16 384 springs, whose nodes the C library returns to
+# the system when freed: the message was built after the free and the CLI
+# crashed, SIGSEGV, helper-21 at stop 54)
+for n in 4096 16384; do
+    refuse '^mdr: q31 table: the profile is too steep over the table' \
+        cycle $S --control grips --path 0,1e-7,-1e-7 --steps-per-segment 10 --springs $n --a-max 9.99e-6 --arith q31
+done
+# a machine too soft for the q31 engine (kappa = 2 E* L / k_m > 2^16): named,
+# with the least stiffness on this table, which (1 % above it) is taken (the
+# message was "unknown control mode", helper-21 at stop 54)
+Pm="--profile paraboloid --R 10e-6 --E 1e6 --w 0.05 --control machine --path 0,3e-6,-3e-6 --steps-per-segment 100 --springs 128"
+refuse '^mdr: q31 engine \(--k-machine, --E, --a-max\): the machine is too soft for q31 on this table: kappa = 2 E\* L / k_m = 1.03[0-9]*e\+06 .*above 2 E\* L / 65536 = [0-9.e+-]* N/m' \
+    cycle $Pm --k-machine 1e-5 --arith q31
+km=$($MDR cycle $Pm --k-machine 1e-5 --arith q31 2>&1 >/dev/null | sed -n 's/.* = \([0-9.e+-]*\) N\/m on this table.*/\1/p')
+$MDR cycle $Pm --k-machine "$(awk -v k="$km" 'BEGIN { printf "%.6g", 1.01 * k }')" --arith q31 >/dev/null 2>&1 && ok ||
+    bad "q31 machine: the stiffness the refusal names ($km N/m, 1 % above) is taken"
 printf 'r,f\n0,0\n1e-6,0\n1.0001e-6,1e-6\n2e-6,1.00001e-6\n' >"$TMP/kink.csv"
 refuse '^mdr: q31 table: too few springs for the profile.s curvature .*raise --springs \(2\)' \
     table --profile table --file "$TMP/kink.csv" --springs 2 --arith q31
