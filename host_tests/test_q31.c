@@ -57,6 +57,16 @@
  *     chain's values, and a product's rescaling to 32 bits (mdr_q_rs32)
  *     exactly its low word (a change of a value would change the
  *     fingerprint);
+ *   a shallow approach (shallow_approach; helper-21, stop 54): the radius
+ *     the approach reaches (w_adv = 0: g(a_m) = d) is resolved to the
+ *     rounding of g there, SHALLOW_GTOL = 4 LSB of Q2.29 (MDR_Q_UTOL, the
+ *     rounding bound of the engine's U), so a_m to 4/(a g'(a_m)) relative,
+ *     4/(n k) for g ~ a^n at d = k LSB; a pull-off from a contact pinned
+ *     at a_m (F ~ a_m^(3/2)) inherits 1.5 times that: |F_po,q31 -
+ *     F_po,f64| <= 1.5 SHALLOW_GTOL/(n k) |F_po,f64| + TOL_LSB LSB of F,
+ *     which at d of a few LSB is far above the deep-approach TOL_LSB (the
+ *     conditioning of the profile near the apex in the fixed format, not
+ *     the solver's error);
  *   the adhesion limit MDR_Q31_ADH_LSB (adhesion_limit): the least w that
  *     init accepts, found by bisection, has a JKR pull-off (exact on a
  *     paraboloid's table) of 1 to ADH_FLIP_MAX = 1.05 times the limit
@@ -592,6 +602,66 @@ static void adhesion_range(void **st)
     assert_true(accepted >= 3 && refused >= 2 && in0 == 2);
 }
 
+/* A shallow approach (helper-21, stop 54): under fixed grips to a depth of
+ * k LSB of D0 (w_adv = 0), then back to -1 unit through the pull-off, on
+ * the f64 engine and the q31 engine of the same table at the same raw
+ * control; the q31 pull-off within the conditioning bound of the radius
+ * the approach reached (the top of this file), for the paraboloid (n = 2)
+ * and a steep power law (n = 8, helper-21's: f = C r^8, R ~ 0.24 um). */
+#define SHALLOW_GTOL 4.0
+static void shallow_approach(void **st)
+{
+    static const int32_t ks[] = {2, 10, 100, 1000, 10000, 100000};
+    const double pi = 3.14159265358979323846;
+    int p, i, j;
+    (void)st;
+    for (p = 0; p < 2; p++) {
+        const double E = p == 0 ? 1e6 : 4.38e7, w = p == 0 ? 0.05 : 0.0651, n = p == 0 ? 2.0 : 8.0;
+        const double pd[3] = {p == 0 ? 10e-6 : 2.0572754242662486e+46, p == 0 ? 0.0 : 8.0, 0};
+        const double amax = p == 0 ? 3.0 * cbrt(9.0 * pi * w * 10e-6 * 10e-6 / (8.0 * E)) : 1.54e-7;
+        const uint16_t ns = p == 0 ? 256 : 1024;
+        mdr_table_f64 t64;
+        mdr_table_q31 tq;
+        {
+            mdr_contact_f64 c;
+            assert_int_equal(mdr_contact_init_f64(&c, p == 0 ? MDR_PROFILE_PARABOLOID : MDR_PROFILE_POWERLAW, pd, E, w),
+                             MDR_OK);
+            assert_int_equal(mdr_table_init_profile_f64(&t64, nf, ns, &c, amax), MDR_OK);
+        }
+        assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
+        for (i = 0; i < (int)(sizeof ks / sizeof ks[0]); i++) {
+            mdr_engine_f64 e;
+            mdr_engine_q31 q;
+            double D0, Flsb, po64 = 0.0, poq = 0.0, rel, bound;
+            assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, E, w, 0.0, 0.0), MDR_OK);
+            assert_int_equal(mdr_engine_init_f64(&e, &t64, E, w, 0.0, 0.0), MDR_OK);
+            D0 = (double)q.D0 / 536870912.0;
+            Flsb = (double)q.F0 / 536870912.0;
+            for (j = 1; j <= 4200; j++) {
+                const int32_t raw = j <= 200 ? (int32_t)lround((double)ks[i] * j / 200.0)
+                                             : (int32_t)lround((double)ks[i] - ((double)ks[i] + 536870912.0) * (j - 200) / 4000.0);
+                mdr_step_f64 o;
+                mdr_step_q31 oq;
+                assert_int_equal(mdr_engine_step_d_f64(&e, raw * D0, &o), MDR_OK);
+                assert_int_equal(mdr_engine_step_d_q31(&q, raw, &oq), MDR_OK);
+                if (o.event == MDR_EV_PULL_OFF && po64 == 0.0) {
+                    po64 = o.F0;
+                }
+                if (oq.event == MDR_EV_PULL_OFF && poq == 0.0) {
+                    poq = oq.F0 * Flsb;
+                }
+            }
+            assert_true(po64 < 0.0 && poq < 0.0);
+            rel = fabs(poq - po64) / fabs(po64);
+            bound = 1.5 * SHALLOW_GTOL / (n * (double)ks[i]) + TOL_LSB * Flsb / fabs(po64);
+            printf("  q31 shallow approach, n = %.0f, d = %6d LSB of D0: pull-off %.4g N, f64 %.4g N: %.2g relative, "
+                   "%.3g LSB of F (bound %.2g relative)\n",
+                   n, (int)ks[i], poq, po64, rel, fabs(poq - po64) / Flsb, bound);
+            assert_true(rel <= bound);
+        }
+    }
+}
+
 /* Where init's refusal of an unresolved adhesion sets in: bisect w to the
  * least that init accepts on a paraboloid's table (coarse and fine, the
  * fold at that w in spring 0 of 8 springs, in spring 0 or 1 of 32) and
@@ -1055,6 +1125,7 @@ int main(void)
 #ifndef MDR_TARGET_TEST
         cmocka_unit_test(adhesion_range),
         cmocka_unit_test(adhesion_limit),
+        cmocka_unit_test(shallow_approach),
         cmocka_unit_test(known_jumps),
         cmocka_unit_test(scenes_vs_ref),
         cmocka_unit_test(coarse_tables_lsb),

@@ -54,7 +54,10 @@
  *  pull-off force under fixed load in LSB of F (Q2.29 of F0); below it
  *  MDR_E_PARAM (a range so far above the pull-off radius that F0 makes
  *  the adhesion rounding noise). About half an LSB is the pull-off's
- *  error, so an accepted one is within ~5e-4 relative. */
+ *  error, so an accepted one is within ~5e-4 relative, after an approach
+ *  deep enough to resolve the contact's radius (a retract pinned at the
+ *  radius of an approach k LSB of D0 deep, g ~ a^n, keeps its rounding:
+ *  up to 6/(n k) relative; docs/fixed-point.md). */
 #define MDR_Q31_ADH_LSB 1024
 
 /** One unit in a Q1.30 resp. Q2.29 format (raw value of 1.0). */

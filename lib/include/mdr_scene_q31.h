@@ -38,7 +38,11 @@
  * Accuracy: the Newton root is exact to half an LSB of tau (the quadratic
  * stopping rule) plus U's rounding (a few LSB of Q2.29); d and F within a
  * few LSB of the f64 scene at the same control over whole cycles (the
- * tolerances measured by host_tests/test_scene.c).
+ * tolerances measured by host_tests/test_scene.c) whose approach goes
+ * deeper than a few hundred LSB of d: a shallower contact's radius is
+ * resolved only to the rounding of g there, ~1 LSB / (a g'(a)) relative,
+ * and a contact pinned at it keeps that error to its pull-off
+ * (docs/fixed-point.md, "Resolution of the profile near the apex").
  */
 #ifndef MDR_SCENE_Q31_H
 #define MDR_SCENE_Q31_H
