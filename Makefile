@@ -102,7 +102,7 @@ test: deps-check
 	$(MAKE) --no-print-directory -j2 cross
 	$(MAKE) --no-print-directory target-test
 	$(MAKE) --no-print-directory python-test
-	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) $(FUSED_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) san-cli $(FUSED_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 deps:
 	@sh mk/deps.sh
