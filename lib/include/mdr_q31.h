@@ -54,7 +54,8 @@
  *  pull-off force under fixed load in LSB of F (Q2.29 of F0); below it
  *  MDR_E_PARAM (a range so far above the pull-off radius that F0 makes
  *  the adhesion rounding noise). About half an LSB is the pull-off's
- *  error, so an accepted one is within ~5e-4 relative, after an approach
+ *  error, so an accepted one is within ~5e-4 relative (at the same raw
+ *  control; an SI control's rounding to Q2.29 adds up to ~0.5 LSB), after an approach
  *  deep enough to resolve the contact's radius (a retract pinned at the
  *  radius of an approach k LSB of D0 deep, g ~ a^n, keeps its rounding:
  *  up to 6/(n k) relative; docs/fixed-point.md). */
