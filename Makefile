@@ -5,7 +5,7 @@
 #   make demo         build mdr and the AFM demo and run it: a table on the
 #                     terminal, CSV and PNG plots in build/demo/
 #   make test         everything that proves the library (the README's test
-#                     command; about 12 minutes on two cores)
+#                     command; about a quarter of an hour on two cores)
 #   make deps         install the Debian packages of mk/packages.txt (apt-get,
 #                     through sudo when not root); deps-check only names
 #                     the missing ones

@@ -64,9 +64,23 @@ static int usage_errf(const char *fmt, ...)
     return 2;
 }
 
+/* a status's name (lib/include/mdr_types.h), as the Python package's
+ * exceptions give it: the line names the status as well as its number */
+static const char *cli_stname(mdr_status st)
+{
+    static const char *const names[] = {
+        "MDR_OK",         "MDR_E_NULL",    "MDR_E_NONFINITE", "MDR_E_PARAM",    "MDR_E_KIND",
+        "MDR_E_RADIUS",   "MDR_E_POSITION", "MDR_E_CONTROL",  "MDR_E_NOCONV",   "MDR_E_SINGULAR",
+        "MDR_E_OVERFLOW", "MDR_E_OUTSIDE", "MDR_E_TABLE",     "MDR_E_SIZE",     "MDR_E_DISABLED",
+        "MDR_E_FEW",      "MDR_E_ORDER",   "MDR_E_NOCONTACT", "MDR_E_NOPULLOFF", "MDR_E_FITCAP",
+        "MDR_E_DEGENERATE", "MDR_E_JUMPS", "MDR_E_PINNED",    "MDR_E_MISFIT"};
+    const int i = -(int)st;
+    return i >= 0 && i < (int)(sizeof names / sizeof names[0]) ? names[i] : "unknown status";
+}
+
 static int cli_fail(const char *what, mdr_status st)
 {
-    fprintf(stderr, "mdr: %s: %s (status %d)\n", what, mdr_status_str(st), (int)st);
+    fprintf(stderr, "mdr: %s: %s (%s, status %d)\n", what, mdr_status_str(st), cli_stname(st), (int)st);
     return st == MDR_E_NOCONV ? 1 : 2;
 }
 

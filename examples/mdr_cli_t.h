@@ -52,8 +52,28 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
     {
         CLI_T p[3] = {(CLI_T)A->p[0], (CLI_T)A->p[1], (CLI_T)A->p[2]};
         st = CLI_SFX(mdr_contact_init)(c, A->kind, p, (CLI_T)A->E, (CLI_T)A->w);
+        if (st != MDR_OK) {
+            /* which argument: the profile's with a valid material (E* = 1,
+             * w = 0), then E* alone (w = 0): its flags, --E or --w */
+            CLI_SFX(mdr_contact) t;
+            char what[80];
+            int k;
+            if (CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)1, (CLI_T)0) != MDR_OK) {
+                (void)snprintf(what, sizeof what, "profile %s (", profiles[A->pi].name);
+                for (k = 0; k < 3 && profiles[A->pi].flags[k] != NULL; k++) {
+                    (void)snprintf(what + strlen(what), sizeof what - strlen(what), "%s%s", k > 0 ? ", " : "",
+                                   profiles[A->pi].flags[k]);
+                }
+                (void)snprintf(what + strlen(what), sizeof what - strlen(what), ")");
+            } else {
+                (void)snprintf(what, sizeof what, "%s",
+                               CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)A->E, (CLI_T)0) != MDR_OK ? "--E"
+                                                                                                  : "--w");
+            }
+            return cli_fail(what, st);
+        }
     }
-    return st == MDR_OK ? 0 : cli_fail("profile/material", st);
+    return 0;
 }
 
 /* The spring table of the scene into malloc'd nodes (freed by the caller):
@@ -88,8 +108,8 @@ static int CLI_SFX(make_table)(const struct cli_args *A, CLI_SFX(mdr_table) *tab
     if (st == MDR_E_OVERFLOW) {
         fprintf(stderr,
                 "mdr: --a-max: the table's values leave this arithmetic's range, above it or so far below it that "
-                "the springs' curvature terms lose their digits%s (status %d)\n",
-                CLI_F64 ? "" : "; --arith f64 reaches further", (int)st);
+                "the springs' curvature terms lose their digits%s (%s, status %d)\n",
+                CLI_F64 ? "" : "; --arith f64 reaches further", cli_stname(st), (int)st);
         return 2;
     }
     if (st != MDR_OK) {
@@ -304,8 +324,8 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
                     "mdr: %sengine (--springs, --a-max, table to %.6g m): the flat's rim (--b, or the samples' flat end or "
                     "first kink) lies inside the first of %u springs (%.6g m wide), and the pull-off may lie there, which "
                     "no spring resolves; use more springs or a lower --a-max, so that a spring is no wider than the "
-                    "rim (status %d)\n",
-                    A->q31 ? "q31 " : "", (double)tab.h * (double)tab.n, (unsigned)tab.n, (double)tab.h, (int)st);
+                    "rim (%s, status %d)\n",
+                    A->q31 ? "q31 " : "", (double)tab.h * (double)tab.n, (unsigned)tab.n, (double)tab.h, cli_stname(st), (int)st);
             return 2;
         }
     }
@@ -314,9 +334,9 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         fprintf(stderr,
                 "mdr: engine (--springs, --a-max, table to %.6g m): the pull-off lies so deep inside the first of %u "
                 "springs, or its force is so small, that this arithmetic does not resolve it to 1/%d; use more "
-                "springs, a lower --a-max%s (status %d)\n",
+                "springs, a lower --a-max%s (%s, status %d)\n",
                 (double)tab.h * (double)tab.n, (unsigned)tab.n, MDR_ENGINE_ADH_COND,
-                CLI_F64 ? "" : ", or --arith f64", (int)st);
+                CLI_F64 ? "" : ", or --arith f64", cli_stname(st), (int)st);
         return 2;
     }
     if (adh) { /* q31 (MDR_Q31_ADH_LSB) */
@@ -324,8 +344,8 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         free(nodes);
         fprintf(stderr,
                 "mdr: q31 engine (--a-max, table to %.6g m): the pull-off force is below %d LSB of the q31 force "
-                "unit over a table this far beyond the pull-off radius; lower --a-max or use --arith f32 (status %d)\n",
-                (double)Q.t.L + (double)Q.t.L_lo, MDR_Q31_ADH_LSB, (int)st);
+                "unit over a table this far beyond the pull-off radius; lower --a-max or use --arith f32 (%s, status %d)\n",
+                (double)Q.t.L + (double)Q.t.L_lo, MDR_Q31_ADH_LSB, cli_stname(st), (int)st);
         return 2;
     }
     if (st == MDR_E_CONTROL && A->q31 && A->k_m > 0) {
@@ -339,8 +359,8 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
                 "mdr: q31 engine (--k-machine, --E, --a-max): the machine is too soft for q31 on this table: "
                 "kappa = 2 E* L / k_m = %.6g (L = %.6g m, the table) is above 65536: q31 needs --k-machine above "
                 "2 E* L / 65536 = %.6g N/m on this table; raise --k-machine, lower --a-max, or use --arith f32 "
-                "(status %d)\n",
-                kap, L, 2.0 * A->E * L / 65536.0, (int)st);
+                "(%s, status %d)\n",
+                kap, L, 2.0 * A->E * L / 65536.0, cli_stname(st), (int)st);
         return 2;
     }
     if (st != MDR_OK) {
@@ -408,8 +428,8 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
                 }
             }
             if (st != MDR_OK) {
-                fprintf(stderr, "mdr: step %ld (value %.9g): %s (status %d)%s\n", step, v,
-                        mdr_status_str(st), (int)st,
+                fprintf(stderr, "mdr: step %ld (value %.9g): %s (%s, status %d)%s\n", step, v,
+                        mdr_status_str(st), cli_stname(st), (int)st,
                         st == MDR_E_OUTSIDE ? "; raise --a-max" : "");
                 rc = 1;
                 break;

@@ -557,6 +557,14 @@ for n in 4096 16384; do
     refuse '^mdr: q31 table: the profile is too steep over the table' \
         cycle $S --control grips --path 0,1e-7,-1e-7 --steps-per-segment 10 --springs $n --a-max 9.99e-6 --arith q31
 done
+# a profile or material out of range: the line names the argument and the
+# status by name and number (it said "profile/material ... (status -3)",
+# helper-22 at stop 54)
+refuse '^mdr: profile paraboloid \(--R\): parameter out of range \(MDR_E_PARAM, status -3\)$' eq --profile paraboloid --R -10e-6 --E 1e6 --w 0.05 --a 1e-6
+refuse '^mdr: profile wavy \(--R, --h, --lambda\): parameter out of range \(MDR_E_PARAM, status -3\)$' \
+    eq --profile wavy --R 1e-5 --h -1e-8 --lambda 5e-7 --E 1e6 --w 0.05 --a 1e-6
+refuse '^mdr: --E: parameter out of range \(MDR_E_PARAM, status -3\)$' eq --profile paraboloid --R 10e-6 --E 0 --w 0.05 --a 1e-6
+refuse '^mdr: --w: parameter out of range \(MDR_E_PARAM, status -3\)$' critical --profile cone --theta 0.5 --E 1e6 --w -0.05 --control load
 # a machine too soft for the q31 engine (kappa = 2 E* L / k_m > 2^16): named,
 # with the least stiffness on this table, which (1 % above it) is taken (the
 # message was "unknown control mode", helper-21 at stop 54)
