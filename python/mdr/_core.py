@@ -69,9 +69,10 @@ FLT_MAX = float(np.finfo(np.float32).max)
 def narrow(arith, where, **values):
     """The values as floats; for f32 a finite value beyond float's range is
     refused (MDR_E_OVERFLOW) instead of becoming inf on the way to C. A bool
-    is no number here (k_machine=True is a mistake, not 1 N/m): TypeError."""
+    is no number here (k_machine=True is a mistake, not 1 N/m), nor a string
+    (R="10e-6" was read as a number, helper-22 at stop 54): TypeError."""
     for name, v in values.items():
-        if isinstance(v, (bool, np.bool_)):
+        if isinstance(v, (bool, np.bool_, str, bytes)):
             raise TypeError("%s: %s must be a number, not %r" % (where, name, v))
     out = [float(v) for v in values.values()]
     if arith == "f32":

@@ -66,7 +66,9 @@ class Engine:
     does (1.25 x the radius where the equilibrium curve reaches the path's
     largest value; q31: doubled, at most 8 times, until the q31 table exists
     and every tick of that run's path fits its ranges), so errors of the table or of the engine's parameters
-    appear there. A sampled tip: Engine(mdr.Contact("table", r=..., f=...,
+    appear there (springs out of range, and not a power of two for q31, are
+    refused at once: MDR_E_SIZE; a string or bool where a number goes:
+    TypeError). A sampled tip: Engine(mdr.Contact("table", r=..., f=...,
     E=..., w=...)) or Engine.from_tip(r, f, E=..., w=...), the same table
     (to the last sample r[-1]; a_max is not taken).
     An Engine holds state: run it from one thread at a time (the C loop
@@ -122,8 +124,9 @@ class Engine:
             raise ValueError("Engine: arith must be 'f32', 'f64' or 'q31', not %r" % (arith,))
         if isinstance(springs, bool) or not isinstance(springs, (int, np.integer)):
             raise TypeError("Engine: springs must be an integer, not %r" % (springs,))
-        if not 0 <= springs <= 65535:
-            raise Error(lib.MDR_E_SIZE, "Engine: springs = %d (%d ... %d)" % (
+        # refused here, not at the first run's table (helper-22, stop 54)
+        if not lib.MDR_SPRINGS_MIN <= springs <= lib.MDR_SPRINGS_MAX or (arith == "q31" and springs & (springs - 1)):
+            raise Error(lib.MDR_E_SIZE, "Engine: springs = %d (%d ... %d; q31: a power of two)" % (
                 springs, lib.MDR_SPRINGS_MIN, lib.MDR_SPRINGS_MAX))
         self.E, self.w = float(E), float(w)
         self.springs = int(springs)

@@ -168,9 +168,15 @@ def test_engine_refusals():
         mdr.Engine("paraboloid")
     with pytest.raises(ValueError, match="arith"):
         mdr.Engine(c, arith="q15")
-    # the table is built at the first run: its refusals come from there
-    lazy = mdr.Engine(c, springs=1)
-    refused("MDR_E_SIZE", lazy.run, [0, 1e-7], control="grips", steps_per_segment=10)
+    # springs out of range are refused at once, not at the first run, whose
+    # table is built then (helper-22, stop 54), with the range in the text
+    for n, ar in ((1, "f64"), (0, "f32"), (1000, "q31")):
+        e = refused("MDR_E_SIZE", mdr.Engine, c, springs=n, arith=ar)
+        assert "(2 ... 16384; q31: a power of two)" in str(e), str(e)
+    with pytest.raises(TypeError, match="R must be a number"):
+        mdr.Contact("paraboloid", R="10e-6", E=1e6, w=0.05)
+    with pytest.raises(TypeError, match="w must be a number"):
+        mdr.Contact("cone", theta=0.3, E=1e6, w=b"0.05")
 
 
 @pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
