@@ -207,7 +207,7 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
         if (out == NULL) {
             free(qn);
             free(nodes);
-            return usage_error("cannot write", A->output);
+            return usage_sys("cannot write", A->output);
         }
     }
     if (A->q31) {
@@ -248,7 +248,7 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
                 A->name, (double)tab.h, lit, (unsigned)tab.n, (unsigned)tab.wall, (unsigned)tab.rim0);
     }
     if (out != stdout && fclose(out) != 0) {
-        rc = usage_error("cannot write", A->output);
+        rc = usage_sys("cannot write", A->output);
     }
     free(qn);
     free(nodes);
@@ -404,7 +404,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         if (sum == NULL) {
             free(qnodes);
             free(nodes);
-            return usage_error("cannot write --summary", A->summary);
+            return usage_sys("cannot write --summary", A->summary);
         }
     }
     memset(&po, 0, sizeof po);
@@ -537,7 +537,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         if (fclose(sum) != 0 || werr) {
             /* the file took the first byte but not the rest (the disk filled
              * during the run): a failure of the run, not a bad argument */
-            (void)usage_error("cannot write --summary", A->summary);
+            (void)usage_sys("cannot write --summary", A->summary);
             rc = rc ? rc : 1;
         }
     }

@@ -403,7 +403,7 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
     fp = fopen(A->model, "w");
     if (fp == NULL) {
         free(Fm);
-        return usage_error("cannot write", A->model);
+        return usage_sys("cannot write", A->model);
     }
     fprintf(fp, "z,F,F_model,branch\n");
     for (i = 0; i < c->n; i++) {
@@ -468,7 +468,7 @@ static int fit_curve_cmd(const struct fit_args *A)
     r.name = A->file;
     r.fp = fopen(A->file, "rb");
     if (r.fp == NULL) {
-        return usage_error("cannot open", A->file);
+        return usage_sys("cannot open", A->file);
     }
     for (;;) {
         char *f[3][2];
@@ -494,7 +494,7 @@ static int fit_curve_cmd(const struct fit_args *A)
         }
     }
     if (rc == 0 && ferror(r.fp)) {
-        rc = usage_error("read error in", A->file);
+        rc = usage_sys("read error in", A->file);
     }
     (void)fclose(r.fp); /* read only */
     free(r.buf);
@@ -882,7 +882,7 @@ static int fit_map_cmd(const struct fit_args *A)
     r.name = A->file;
     r.fp = fopen(A->file, "rb");
     if (r.fp == NULL) {
-        return usage_error("cannot open", A->file);
+        return usage_sys("cannot open", A->file);
     }
     if (tty && fseek(r.fp, 0, SEEK_END) == 0) {
         total = ftell(r.fp);
@@ -936,7 +936,7 @@ static int fit_map_cmd(const struct fit_args *A)
         cur = 1 - cur;
     }
     if (rc == 0 && ferror(r.fp)) {
-        rc = usage_error("read error in", A->file);
+        rc = usage_sys("read error in", A->file);
     }
     if (tty) {
         fputc('\n', stderr);

@@ -442,7 +442,7 @@ refuse 'cannot write --summary: /nonexistent/s.json' $CY --summary /nonexistent/
 # a summary file that opens but takes no byte: refused before the CSV goes
 # to stdout (not exit 2 after the whole CSV)
 if [ -w /dev/full ]; then
-    refuse '^mdr: cannot write --summary: /dev/full$' $CY --summary /dev/full
+    refuse '^mdr: cannot write --summary: /dev/full \(No space left on device\)$' $CY --summary /dev/full
 fi
 
 # units and inputs in every JSON object; G_rel (the energy release rate)
@@ -565,6 +565,11 @@ refuse '^mdr: profile wavy \(--R, --h, --lambda\): parameter out of range \(MDR_
     eq --profile wavy --R 1e-5 --h -1e-8 --lambda 5e-7 --E 1e6 --w 0.05 --a 1e-6
 refuse '^mdr: --E: parameter out of range \(MDR_E_PARAM, status -3\)$' eq --profile paraboloid --R 10e-6 --E 0 --w 0.05 --a 1e-6
 refuse '^mdr: --w: parameter out of range \(MDR_E_PARAM, status -3\)$' critical --profile cone --theta 0.5 --E 1e6 --w -0.05 --control load
+# a file that cannot be opened or read: the line gives the system's reason
+# (helper-22 at stop 54: "cannot open: nosuch.csv" and nothing more)
+refuse '^mdr: cannot open: '"$TMP"'/nosuch.csv \(No such file or directory\)$' \
+    critical --profile table --file "$TMP/nosuch.csv" --E 1e6 --w 0.05 --control grips
+refuse '^mdr: read error in: '"$TMP"' \(Is a directory\)$' critical --profile table --file "$TMP" --E 1e6 --w 0.05 --control grips
 # a machine too soft for the q31 engine (kappa = 2 E* L / k_m > 2^16): named,
 # with the least stiffness on this table, which (1 % above it) is taken (the
 # message was "unknown control mode", helper-21 at stop 54)

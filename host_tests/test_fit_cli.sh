@@ -441,7 +441,7 @@ failclean() { # failclean RC PATTERN ARGS...: exit RC, nothing on stdout, one st
         printf '%s' "$err" | grep -Eq -- "$pat" && ok ||
         bad "want exit $want, empty stdout, one line /$pat/: $* (rc $rc, stdout ${#out} chars, stderr '$err')"
 }
-failclean 2 '^mdr: cannot write: /nonexistent/x.csv$' fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --model /nonexistent/x.csv
+failclean 2 '^mdr: cannot write: /nonexistent/x.csv \(No such file or directory\)$' fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --model /nonexistent/x.csv
 if [ -w /dev/full ]; then
     failclean 1 '^mdr: --model: ' fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --model /dev/full
 fi
