@@ -25,6 +25,18 @@ step "install libmdr" cmake --install "$dir/lib"
 step "configure (find_package)" cmake -S examples/cmake-consumer -B "$dir/pkg" -DCMAKE_PREFIX_PATH="$dir/prefix"
 step "build (find_package)" cmake --build "$dir/pkg" -j2
 echo "cmake-check host, find_package: $("$dir/pkg/consumer")"
+# the same build installed into another prefix (cmake --install --prefix):
+# its mdr.pc points there (pkg-config alone builds and runs the consumer)
+step "install libmdr (--prefix)" cmake --install "$dir/lib" --prefix "$dir/moved"
+pc=$(find "$dir/moved" -name mdr.pc)
+step "pkg-config (--prefix)" env PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --cflags --libs mdr
+flags=$(PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --cflags --libs mdr)
+case $(PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --variable=libdir mdr) in
+"$dir/moved/"*) ;;
+*) echo "cmake-check: mdr.pc installed with --prefix $dir/moved points elsewhere: $flags"; exit 1;;
+esac
+step "build (pkg-config, --prefix)" cc -std=c99 -Wall -Wextra -Werror examples/cmake-consumer/main.c $flags -o "$dir/moved/consumer"
+echo "cmake-check host, cmake --install --prefix elsewhere, pkg-config '$flags': $("$dir/moved/consumer")"
 
 step "configure (Cortex-M4F)" cmake -S examples/cmake-consumer -B "$dir/m4f" -DMDR_SOURCE_DIR="$src" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/arm-none-eabi.cmake" -DCMAKE_BUILD_TYPE=MinSizeRel
