@@ -16,6 +16,16 @@ LD_LIBRARY_PATH="$dir/prefix/lib" ldd "$dir/consumer_shared" | grep -q "$dir/pre
 $cc -std=c99 -Wall -Wextra -Werror examples/cmake-consumer/main.c $(pkg-config --cflags mdr) \
     "$dir/prefix/lib/libmdr.a" -o "$dir/consumer_static"
 "$dir/consumer_static" > "$dir/static.out"
+# the README's host C program, as written, against the installed library
+awk '/^```c$/ { c = 1; b = ""; next } /^```$/ { if (c && b ~ /int main\(void\)/) { printf "%s", b; exit } c = 0; next }
+     c { b = b $0 "\n" }' README.md > "$dir/readme_host.c"
+grep -q 'int main(void)' "$dir/readme_host.c" || { echo "install-check: no C program with main in README.md"; exit 1; }
+$cc -std=c99 -Wall -Wextra -Werror "$dir/readme_host.c" $(pkg-config --cflags mdr) "$dir/prefix/lib/libmdr.a" \
+    -o "$dir/readme_host"
+"$dir/readme_host" > "$dir/readme_host.out"
+grep -q 'pull-off -2.204e-09 N' "$dir/readme_host.out" || {
+    cat "$dir/readme_host.out"; echo "install-check: the README's C program does not print mdr critical's pull-off"; exit 1; }
 echo "install-check: make install PREFIX=... ($(cd "$dir/prefix" && find include lib -type f | wc -l) files); built with '$flags':"
 echo "  shared: $(cat "$dir/shared.out")"
 echo "  static: $(cat "$dir/static.out")"
+echo "  README.md host C program: $(cat "$dir/readme_host.out")"
