@@ -151,6 +151,10 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
         if np.ma.isMaskedArray(v) and np.ma.getmaskarray(v).any():
             raise ValueError("fit: %s has masked samples; pass the unmasked ones (both arrays, the same "
                              "samples)" % name)
+    for name, v in (("z", z), ("F", F)):  # (a file name: numpy said "could not convert string to float")
+        if isinstance(v, (str, bytes)) or v is None:
+            raise TypeError("fit: %s must be an array of samples, not %r (read a file with numpy.loadtxt, "
+                            "or use `mdr fit --curve FILE`)" % (name, v))
     z = np.array(z, dtype=np.float64).copy(order="C")
     F = np.array(F, dtype=np.float64).copy(order="C")
     if z.ndim != 1 or z.shape != F.shape:

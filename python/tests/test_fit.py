@@ -297,6 +297,8 @@ def test_refusals(curve, arith):
     raises("MDR_E_NONFINITE", z, F, "paraboloid", R=20e-9, k_machine=np.nan, arith=arith)
     raises("MDR_E_PARAM", z, F, "paraboloid", z_e=0.0, **tip)
     raises("MDR_E_PARAM", z, F, "paraboloid", E0=1e9, **tip)  # E0 without w0
+    with pytest.raises(TypeError, match="numpy.loadtxt"):  # a file name (helper-22, stop 54)
+        mdr.fit("nosuch.csv", None, "paraboloid", **tip)
     raises("MDR_E_PARAM", z, F, "paraboloid", E0=-1e9, w0=0.05, **tip)
     raises("MDR_E_PARAM", z, F, "paraboloid", method="lsq", **tip)
     raises("MDR_E_KIND", z, F, "flatpunch", a0=1e-8, k_machine=0.2, arith=arith)
