@@ -57,8 +57,8 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
              * w = 0), then E* alone (w = 0): its flags, --E or --w */
             CLI_SFX(mdr_contact) t;
             char what[80];
-            int k;
             if (CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)1, (CLI_T)0) != MDR_OK) {
+                int k;
                 (void)snprintf(what, sizeof what, "profile %s (", profiles[A->pi].name);
                 for (k = 0; k < 3 && profiles[A->pi].flags[k] != NULL; k++) {
                     (void)snprintf(what + strlen(what), sizeof what - strlen(what), "%s%s", k > 0 ? ", " : "",
