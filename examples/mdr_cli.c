@@ -79,18 +79,24 @@ static int usage_errf(const char *fmt, ...)
 }
 
 /* a status's name (lib/include/mdr_types.h), as the Python package's
- * exceptions give it: the line names the status as well as its number */
+ * exceptions give it: the line names the status as well as its number.
+ * Each entry is placed by its code and named by its own macro (CLI_ST), so
+ * neither the order nor a name can be wrong; test_cli.sh checks that every
+ * MDR_E_* of the header has one. */
+#define CLI_ST(s) [-(s)] = #s
 static const char *cli_stname(mdr_status st)
 {
     static const char *const names[] = {
-        "MDR_OK",         "MDR_E_NULL",    "MDR_E_NONFINITE", "MDR_E_PARAM",    "MDR_E_KIND",
-        "MDR_E_RADIUS",   "MDR_E_POSITION", "MDR_E_CONTROL",  "MDR_E_NOCONV",   "MDR_E_SINGULAR",
-        "MDR_E_OVERFLOW", "MDR_E_OUTSIDE", "MDR_E_TABLE",     "MDR_E_SIZE",     "MDR_E_DISABLED",
-        "MDR_E_FEW",      "MDR_E_ORDER",   "MDR_E_NOCONTACT", "MDR_E_NOPULLOFF", "MDR_E_FITCAP",
-        "MDR_E_DEGENERATE", "MDR_E_JUMPS", "MDR_E_PINNED",    "MDR_E_MISFIT"};
+        CLI_ST(MDR_OK),          CLI_ST(MDR_E_NULL),      CLI_ST(MDR_E_NONFINITE), CLI_ST(MDR_E_PARAM),
+        CLI_ST(MDR_E_KIND),      CLI_ST(MDR_E_RADIUS),    CLI_ST(MDR_E_POSITION),  CLI_ST(MDR_E_CONTROL),
+        CLI_ST(MDR_E_NOCONV),    CLI_ST(MDR_E_SINGULAR),  CLI_ST(MDR_E_OVERFLOW),  CLI_ST(MDR_E_OUTSIDE),
+        CLI_ST(MDR_E_TABLE),     CLI_ST(MDR_E_SIZE),      CLI_ST(MDR_E_DISABLED),  CLI_ST(MDR_E_FEW),
+        CLI_ST(MDR_E_ORDER),     CLI_ST(MDR_E_NOCONTACT), CLI_ST(MDR_E_NOPULLOFF), CLI_ST(MDR_E_FITCAP),
+        CLI_ST(MDR_E_DEGENERATE), CLI_ST(MDR_E_JUMPS),    CLI_ST(MDR_E_PINNED),    CLI_ST(MDR_E_MISFIT)};
     const int i = -(int)st;
-    return i >= 0 && i < (int)(sizeof names / sizeof names[0]) ? names[i] : "unknown status";
+    return i >= 0 && i < (int)(sizeof names / sizeof names[0]) && names[i] != NULL ? names[i] : "unknown status";
 }
+#undef CLI_ST
 
 static int cli_fail(const char *what, mdr_status st)
 {

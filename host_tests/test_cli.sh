@@ -565,6 +565,11 @@ refuse '^mdr: profile wavy \(--R, --h, --lambda\): parameter out of range \(MDR_
     eq --profile wavy --R 1e-5 --h -1e-8 --lambda 5e-7 --E 1e6 --w 0.05 --a 1e-6
 refuse '^mdr: --E: parameter out of range \(MDR_E_PARAM, status -3\)$' eq --profile paraboloid --R 10e-6 --E 0 --w 0.05 --a 1e-6
 refuse '^mdr: --w: parameter out of range \(MDR_E_PARAM, status -3\)$' critical --profile cone --theta 0.5 --E 1e6 --w -0.05 --control load
+# every status of the header has its name in the CLI's table (cli_stname)
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+want=$(grep -o '^#define MDR_E_[A-Z_]* ' "$ROOT/lib/include/mdr_types.h" | awk '{ print $2 }' | sort)
+have=$(grep -o 'CLI_ST(MDR_E_[A-Z_]*)' "$ROOT/examples/mdr_cli.c" | sed 's/CLI_ST(\(.*\))/\1/' | sort)
+[ -n "$want" ] && [ "$want" = "$have" ] && ok || bad "the CLI names every MDR_E_* status: $(echo $want) against $(echo $have)"
 # a file that cannot be opened or read: the line gives the system's reason
 # (helper-22 at stop 54: "cannot open: nosuch.csv" and nothing more)
 refuse '^mdr: cannot open: '"$TMP"'/nosuch.csv \(No such file or directory\)$' \
