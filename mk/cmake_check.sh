@@ -28,10 +28,10 @@ echo "cmake-check host, find_package: $("$dir/pkg/consumer")"
 # the same build installed into another prefix (cmake --install --prefix):
 # its mdr.pc points there (pkg-config alone builds and runs the consumer)
 step "install libmdr (--prefix)" cmake --install "$dir/lib" --prefix "$dir/moved"
-pc=$(find "$dir/moved" -name mdr.pc)
-step "pkg-config (--prefix)" env PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --cflags --libs mdr
-flags=$(PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --cflags --libs mdr)
-case $(PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --variable=libdir mdr) in
+pcdir=$(dirname "$(find "$dir/moved" -name mdr.pc)")
+step "pkg-config (--prefix)" env PKG_CONFIG_PATH="$pcdir" pkg-config --cflags --libs mdr
+flags=$(cat "$log")
+case $(PKG_CONFIG_PATH="$pcdir" pkg-config --variable=libdir mdr) in
 "$dir/moved/"*) ;;
 *) echo "cmake-check: mdr.pc installed with --prefix $dir/moved points elsewhere: $flags"; exit 1;;
 esac
