@@ -2453,8 +2453,8 @@ static void rim_in_spring0(void **st)
  * the contact's to 450 nm, the gap's to the last sample; both 0.66 to 0.94
  * of Kendall's d with 1 to 3 flat intervals, the samples' own resolution
  * of a rim between them),
- * and with 10 flat intervals within TOL_RIM_SAMPLED10 = 0.08 of Kendall's d
- * (measured 0.06). Before the tabulated contact's tables raised convex
+ * and with 10 flat intervals both tables within TOL_RIM_SAMPLED10 = 0.08 of
+ * Kendall's d (measured 0.062 and 0.0625). Before the tabulated contact's tables raised convex
  * samples' falling nodes (as mdr_table_init_gap's do), they kept the
  * model's dip before the rim and pulled off at 1.9 (10.5 flat intervals)
  * and 4.0 (3) times Kendall's d. */
@@ -2525,14 +2525,16 @@ static void rim_in_spring0_sampled(void **st)
                     dd[k] = po.d0 / dk;
                 }
                 worst = fmax(worst, fabs(dd[1] / dd[0] - 1));
-                if (!(fabs(dd[1] / dd[0] - 1) <= TOL_RIM_SAMPLED) || (kf[i] == 10 && !(fabs(dd[0] - 1) <= TOL_RIM_SAMPLED10))) {
+                if (!(fabs(dd[1] / dd[0] - 1) <= TOL_RIM_SAMPLED) ||
+                    (kf[i] == 10 && !(fmax(fabs(dd[0] - 1), fabs(dd[1] - 1)) <= TOL_RIM_SAMPLED10))) {
                     print_message("%g + %g flat intervals: pull-off d %.4f (gap), %.4f (tabulated contact) of Kendall's\n",
                                   kf[i], fr[j], dd[0], dd[1]);
                 }
                 assert_true(fabs(dd[1] / dd[0] - 1) <= TOL_RIM_SAMPLED);
-                if (kf[i] == 10) {
-                    worst10 = fmax(worst10, fabs(dd[0] - 1));
+                if (kf[i] == 10) { /* (both tables: the gap's and the tabulated contact's, whose pull-off was 1.9 x) */
+                    worst10 = fmax(worst10, fmax(fabs(dd[0] - 1), fabs(dd[1] - 1)));
                     assert_true(fabs(dd[0] - 1) <= TOL_RIM_SAMPLED10);
+                    assert_true(fabs(dd[1] - 1) <= TOL_RIM_SAMPLED10);
                 }
 #endif
             }
