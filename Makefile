@@ -86,22 +86,28 @@ demo: $(B)/host/afm_demo $(B)/host/mdr
 # build them and run their suites two at a time (-j2: the machine's two
 # cores), each suite's output printed whole, in order (mk/tests.mk,
 # mk/target.mk); lint checks two files at a time.
+# one phase of make test: its wall time appended to $(B)/phase-times (make
+# test prints them at the end: where CI's minutes go)
+test_phase = @echo "make $(1)"; t0=$$(date +%s); $(MAKE) --no-print-directory $(1) || exit 1; \
+  echo "$(firstword $(filter-out -j2,$(1))) $$(($$(date +%s) - t0))," >> $(B)/phase-times
 test: deps-check
-	$(MAKE) --no-print-directory spdx-check headers-check docs errno-check
-	$(MAKE) --no-print-directory -j2 host-tests
-	$(MAKE) --no-print-directory demo-check cmake-check install-check
-	$(MAKE) --no-print-directory -j2 lint
-	$(MAKE) --no-print-directory -j2 san-tests
-	$(MAKE) --no-print-directory -j2 fused-tests
-	$(MAKE) --no-print-directory matrix
-	$(MAKE) --no-print-directory fuzz-replay
-	$(MAKE) --no-print-directory -j2 fuzz
-	$(MAKE) --no-print-directory stress
-	$(MAKE) --no-print-directory q31-exact
-	$(MAKE) --no-print-directory mutate-quick
-	$(MAKE) --no-print-directory -j2 cross
-	$(MAKE) --no-print-directory target-test
-	$(MAKE) --no-print-directory python-test
+	@mkdir -p $(B) && rm -f $(B)/phase-times
+	$(call test_phase,spdx-check headers-check docs errno-check)
+	$(call test_phase,-j2 host-tests)
+	$(call test_phase,demo-check cmake-check install-check)
+	$(call test_phase,-j2 lint)
+	$(call test_phase,-j2 san-tests)
+	$(call test_phase,-j2 fused-tests)
+	$(call test_phase,matrix)
+	$(call test_phase,fuzz-replay)
+	$(call test_phase,-j2 fuzz)
+	$(call test_phase,stress)
+	$(call test_phase,q31-exact)
+	$(call test_phase,mutate-quick)
+	$(call test_phase,-j2 cross)
+	$(call test_phase,target-test)
+	$(call test_phase,python-test)
+	@echo "phase wall times (s): $$(tr '\n' ' ' < $(B)/phase-times)"
 	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) san-cli $(FUSED_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 deps:
