@@ -97,15 +97,9 @@ run_one() {
         # (test_fit: its round trips only, f64, f32 and every profile; its
         # sweeps run in make test's host suites, and no option but
         # MDR_CFG_FIT and those it needs, which make it not applicable,
-        # changes the fit's code; test_q31: all but the LSB sweeps of the
-        # q31 engine (*_lsb: coarse_tables_lsb, 17 s at -O1, and
-        # rim_pull_off_lsb, in each of the configurations with q31 and
-        # f64; they run in make
-        # test's host, sanitizer and mutation suites; the options change
-        # which engines and events are built, not the arithmetic it
-        # measures, and every other q31 test runs here))
+        # changes the fit's code)
         if ! out=$(if [ $t = test_fit ]; then MDR_FIT_TESTS='test_roundtrip_*' ./$d/$t; \
-                   elif [ $t = test_q31 ]; then MDR_SKIP_TESTS='*_lsb' ./$d/$t; else ./$d/$t; fi 2>&1); then
+                   else ./$d/$t; fi 2>&1); then
             echo "[$n] $opts: $t FAILED"; echo "$out" | tail -30; return 1
         fi
         if echo "$out" | grep -q '^not applicable'; then na=$((na + 1)); else ran=$((ran + 1)); fi

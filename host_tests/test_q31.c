@@ -158,8 +158,12 @@ static double residual_q31(const scene *sc, const mdr_table_f64 *t64, const mdr_
                     tq->wall && o->a == MDR_Q30_ONE);
 }
 
-/* one approach-retract cycle under control ctl (path from the f64 grips run) */
-static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q31 *tq, int ctl)
+/* one approach-retract cycle under control ctl (path from the f64 grips run);
+ * vs_ref: also the figures against the GSL reference (eC, eF, ePo: its g by
+ * quadrature at every sample, nine tenths of the time), which only
+ * scenes_vs_ref reads; the LSB figures (lsb, dPo, lsbf) come from the f64
+ * table either way */
+static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q31 *tq, int ctl, bool vs_ref)
 {
     mdr_engine_f64 e;
     mdr_engine_q31 q, qf;
@@ -210,11 +214,13 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
             po64 = o;
         }
         if (q.contact && (sample || oq.jumps)) {
-            res.eC = fmax(res.eC, residual_q31(sc, NULL, tq, Lq, Dq, Fq, &oq));
+            if (vs_ref) {
+                res.eC = fmax(res.eC, residual_q31(sc, NULL, tq, Lq, Dq, Fq, &oq));
+            }
             res.lsb = fmax(res.lsb, residual_q31(sc, t64, tq, Lq, Dq, Fq, &oq) / Fq);
             checked++;
         }
-        if (e.contact && (sample || o.jumps)) {
+        if (vs_ref && e.contact && (sample || o.jumps)) {
             res.eF = fmax(res.eF, scene_residual(sc, NULL, o.a, o.d, o.F, t64->wall && o.a == sc->L));
         }
     }
@@ -222,8 +228,10 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
     assert_int_equal(q.en.cycles, 1);
     assert_true(checked > 20);
     assert_int_equal(po.event, MDR_EV_PULL_OFF);
-    assert_int_equal(ref_critical(&sc->s, ctl, km, a_top, &rc), 0);
-    res.ePo = fabs(po.F0 * Fq - rc.F) / fabs(rc.F);
+    if (vs_ref) {
+        assert_int_equal(ref_critical(&sc->s, ctl, km, a_top, &rc), 0);
+        res.ePo = fabs(po.F0 * Fq - rc.F) / fabs(rc.F);
+    }
     res.dPo = fabs(po.F0 * Fq - po64.F0) / Fq; /* in LSB of F */
     res.eC /= res.Fmax;
     res.eF /= res.Fmax;
@@ -248,7 +256,7 @@ static void scenes_vs_ref(void **st)
         build(&scenes[k], &t64);
         assert_int_equal(mdr_table_q31_from_f64(&tq, nq, &t64), MDR_OK);
         for (ctl = 1; ctl <= 3; ctl++) {
-            result r = cycle(&scenes[k], &t64, &tq, ctl);
+            result r = cycle(&scenes[k], &t64, &tq, ctl, true);
             printf("    %-17s %-8s %.2e  %.2e   %.2e   %4.1f  %4.1f  %5.1f LSB  (%d jumps)\n",
                    scenes[k].name, cn[ctl], r.eC, r.eF, r.ePo, r.lsb, r.dPo, r.lsbf, r.jumps);
             worst[0] = fmax(worst[0], r.eC);
@@ -340,7 +348,7 @@ static void coarse_tables_lsb(void **st)
             assert_int_equal(mdr_engine_init_q31_f64(&q, &tq, sc.s.E, sc.s.w, sc.s.w, 0), MDR_OK);
             b = lsb_budget(&t64, &q);
             for (ctl = 1; ctl <= 3; ctl++) {
-                const result r = cycle(&sc, &t64, &tq, ctl);
+                const result r = cycle(&sc, &t64, &tq, ctl, false);
                 char what[128];
                 printf("    %-17s N %2u %-8s %4.1f  %4.1f LSB  (budget %.1f)\n", sc.name, n, cn[ctl], r.lsb, r.dPo, b);
                 worst[0] = fmax(worst[0], r.lsb);
@@ -387,7 +395,7 @@ static void rim_pull_off_lsb(void **state)
             assert_int_equal(scene_table_f64(&sc, &t64, nf_rim, ns[i]), MDR_OK);
             assert_int_equal(mdr_table_q31_from_f64(&tq, nq_rim, &t64), MDR_OK);
             for (ctl = (int)MDR_CONTROL_LOAD; ctl <= (int)MDR_CONTROL_GRIPS; ctl++) {
-                const result r = cycle(&sc, &t64, &tq, ctl);
+                const result r = cycle(&sc, &t64, &tq, ctl, false);
                 char what[128];
                 worst = fmax(worst, r.dPo);
                 snprintf(what, sizeof what, "rim pull-off q31 - f64 [N %u, L %g, %s]", ns[i], Ls[j],
@@ -1134,11 +1142,6 @@ int main(void)
         cmocka_unit_test(rounding_shifts_32),
 #endif
     };
-#ifndef MDR_TARGET_TEST
-    if (getenv("MDR_SKIP_TESTS")) { /* leave these out (cmocka's pattern: * and ?; host_tests/matrix.sh) */
-        cmocka_set_skip_filter(getenv("MDR_SKIP_TESTS"));
-    }
-#endif
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
 
