@@ -26,4 +26,17 @@
         return 0;                                                                                  \
     }
 
+/* A suite's run, leaving out the tests that match MDR_SKIP_TESTS
+ * (cmocka's pattern: * and ?): make matrix leaves out each suite's long
+ * sweeps, which make test's host, sanitizer and mutation suites run
+ * (host_tests/matrix.sh says which and why). On a target: every test. */
+#ifdef MDR_TARGET_TEST
+#define MDR_RUN_TESTS(tests) cmocka_run_group_tests(tests, NULL, NULL)
+#else
+#include <stdlib.h>
+#define MDR_RUN_TESTS(tests)                                                                       \
+    (getenv("MDR_SKIP_TESTS") != NULL ? cmocka_set_skip_filter(getenv("MDR_SKIP_TESTS")) : (void)0, \
+     cmocka_run_group_tests(tests, NULL, NULL))
+#endif
+
 #endif /* MDR_APPLIES_H */

@@ -2604,7 +2604,7 @@ int main(void)
         cmocka_unit_test(first_equilibrium_coarse_tables),
         cmocka_unit_test(engine_errors),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return MDR_RUN_TESTS(tests);
 }
 
 #endif /* applies */

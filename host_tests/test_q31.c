@@ -1142,7 +1142,7 @@ int main(void)
         cmocka_unit_test(rounding_shifts_32),
 #endif
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return MDR_RUN_TESTS(tests);
 }
 
 #endif /* applies */

@@ -1684,7 +1684,7 @@ int main(void)
     };
     printf("sizeof mdr_scene_f32 %u B, mdr_scene_f64 %u B\n", (unsigned)sizeof(mdr_scene_f32),
            (unsigned)sizeof(mdr_scene_f64));
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return MDR_RUN_TESTS(tests);
 }
 
 #endif /* applies */

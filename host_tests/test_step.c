@@ -1113,7 +1113,7 @@ int main(void)
 #endif
         cmocka_unit_test(largest_tables),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return MDR_RUN_TESTS(tests);
 }
 
 #endif /* applies */

@@ -100,7 +100,7 @@ san-tests: $(addprefix $(B)/san/,$(SAN_TESTS)) $(B)/san/mdr
 
 # Build matrix over the compile-time options (lib/include/mdr_options.h):
 # every configuration compiles warning-free and passes the suites that
-# apply to it (host_tests/matrix.sh). MATRIX=short (in make test, ~40 s):
+# apply to it (host_tests/matrix.sh). MATRIX=short (in make test, ~70 s):
 # each option off at least once, port/configs/*, the forbidden
 # combinations; MATRIX=full: all 384 combinations, library and
 # test_config each (~3 min).
