@@ -7,7 +7,8 @@
 # the step functions with arbitrary input sequences (fuzz_step), built with
 # clang -fsanitize=fuzzer,address,undefined. make fuzz runs each for
 # FUZZ_RUNS inputs from seed 1 and a fresh working corpus (in make test:
-# the same run on every machine), or with FUZZ_TIME=600 for that many
+# the same seed and count on every machine; libFuzzer's path, coverage and
+# time still vary from run to run: docs/accuracy.md), or with FUZZ_TIME=600 for that many
 # seconds from a random seed and the working corpus kept in build/fuzz/
 # (the long run, on demand), always from the committed corpus too; an
 # input that fails is copied into host_tests/fuzz/corpus/<target>/ (commit
