@@ -161,8 +161,9 @@ static double residual_q31(const scene *sc, const mdr_table_f64 *t64, const mdr_
 /* one approach-retract cycle under control ctl (path from the f64 grips run);
  * vs_ref: also the figures against the GSL reference (eC, eF, ePo: its g by
  * quadrature at every sample, nine tenths of the time), which only
- * scenes_vs_ref reads; the LSB figures (lsb, dPo, lsbf) come from the f64
- * table either way */
+ * scenes_vs_ref reads (without vs_ref they are NaN: a test that read them
+ * would fail, not pass on 0); the LSB figures (lsb, dPo, lsbf) come from
+ * the f64 table either way */
 static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q31 *tq, int ctl, bool vs_ref)
 {
     mdr_engine_f64 e;
@@ -233,8 +234,9 @@ static result cycle(const scene *sc, const mdr_table_f64 *t64, const mdr_table_q
         res.ePo = fabs(po.F0 * Fq - rc.F) / fabs(rc.F);
     }
     res.dPo = fabs(po.F0 * Fq - po64.F0) / Fq; /* in LSB of F */
-    res.eC /= res.Fmax;
-    res.eF /= res.Fmax;
+    res.eC = vs_ref ? res.eC / res.Fmax : NAN;
+    res.eF = vs_ref ? res.eF / res.Fmax : NAN;
+    res.ePo = vs_ref ? res.ePo : NAN;
     res.Fq = Fq;
     res.tolf = TOL_LSB + 4 * 5.960464477539063e-08 * 536870912.0 * (q.c_w / 536870912.0 + umax);
     return res;
