@@ -137,9 +137,15 @@ def parse_list(path):
     return entries, errors
 
 
-def run(cmd, cwd=None, timeout=None):
+def run(cmd, cwd=None, timeout=None, env=None):
     return subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          timeout=timeout)
+                          timeout=timeout, env=env)
+
+
+# A cmocka suite stops at a mutant's first failed assertion (CMOCKA_TEST_ABORT:
+# the failure aborts the process, which kills the mutant, instead of running
+# the suite's other tests; a surviving mutant runs every test either way)
+ABORT_ENV = dict(os.environ, CMOCKA_TEST_ABORT="1")
 
 
 def check_entry(e):
@@ -297,7 +303,7 @@ def mutant(e, keep):
                 r = run([exe], timeout=limit)
                 failed = r.returncode != 0 or r.stdout.decode().strip() != expected_trace()
             else:
-                r = run([exe] + args, cwd=ROOT, timeout=limit)
+                r = run([exe] + args, cwd=ROOT, timeout=limit, env=ABORT_ENV)
                 failed = r.returncode != 0
         except subprocess.TimeoutExpired:
             verdict, detail = "killed", "%s (time limit %d s)" % (name, limit)
