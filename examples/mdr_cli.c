@@ -109,14 +109,15 @@ static int is_finite(double v)
     return v - v == 0.0; /* NaN - NaN and inf - inf are NaN */
 }
 
-/* a whole string as a finite number (strtod: decimal or hex; not nan, inf) */
+/* a whole string as a finite number (strtod: decimal or hex; not nan, inf,
+ * nor a nonzero number below double's normal range: tip_csv_strtod) */
 static int parse_num(const char *s, double *v)
 {
     char *end;
     if (s == NULL || *s == '\0') {
         return 0;
     }
-    *v = strtod(s, &end);
+    *v = tip_csv_strtod(s, &end);
     return *end == '\0' && is_finite(*v);
 }
 
@@ -136,7 +137,7 @@ static long parse_list(const char *s, double **out)
     }
     while (i < n) {
         char *end;
-        v[i] = strtod(s, &end);
+        v[i] = tip_csv_strtod(s, &end);
         if (end == s || (*end != ',' && *end != '\0') || !is_finite(v[i])) {
             free(v);
             return -(1 + i);

@@ -594,16 +594,27 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
         return 0;
     }
     if (A->cmd == CMD_CURVE) {
+        /* every row is computed before the first is written (pass 0 only
+         * checks): a radius the library refuses part-way (outside the
+         * profile's domain, an overflow) is one line on stderr and no
+         * output, as any other refusal */
         long i;
-        printf("a,d,F\n");
-        for (i = 1; i <= A->n; i++) {
-            CLI_SFX(mdr_eqstate) e;
-            CLI_T a = (CLI_T)(A->a_max * (double)i / (double)A->n);
-            st = CLI_SFX(mdr_eq)(&c, a, &e);
-            if (st != MDR_OK) {
-                return cli_fail("--a-max", st);
+        int pass;
+        for (pass = 0; pass < 2; pass++) {
+            if (pass == 1) {
+                printf("a,d,F\n");
             }
-            printf(CLI_FMT "," CLI_FMT "," CLI_FMT "\n", (double)e.a, (double)e.d, (double)e.F);
+            for (i = 1; i <= A->n; i++) {
+                CLI_SFX(mdr_eqstate) e;
+                CLI_T a = (CLI_T)(A->a_max * (double)i / (double)A->n);
+                st = CLI_SFX(mdr_eq)(&c, a, &e);
+                if (st != MDR_OK) {
+                    return cli_fail("--a-max", st);
+                }
+                if (pass == 1) {
+                    printf(CLI_FMT "," CLI_FMT "," CLI_FMT "\n", (double)e.a, (double)e.d, (double)e.F);
+                }
+            }
         }
         return 0;
     }

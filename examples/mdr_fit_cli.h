@@ -254,7 +254,7 @@ static int fit_num(const char *s, const char *e, double *v)
     if (s == e) {
         return 0;
     }
-    *v = strtod(s, &end);
+    *v = tip_csv_strtod(s, &end);
     return end == e;
 }
 

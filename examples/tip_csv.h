@@ -18,11 +18,32 @@
 #define TIP_CSV_H
 
 #include <ctype.h>
+#include <errno.h>
+#include <float.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define TIP_CSV_LINE_MAX 256
+
+/* strtod, except that a nonzero number too small in magnitude for any
+ * double (it underflows to 0, with ERANGE) does not parse (*end = s):
+ * 1e-400 is refused, not read as 0 (the CLI's numbers, the tip and curve
+ * files; a subnormal is kept, for the range checks that follow). errno is
+ * as before the call. */
+static inline double tip_csv_strtod(const char *s, char **end)
+{
+    const int e0 = errno;
+    double v;
+    errno = 0;
+    v = strtod(s, end);
+    if (errno == ERANGE && v == 0.0) {
+        *end = (char *)s; /* (strtod's own end is not const either) */
+        v = 0.0;
+    }
+    errno = e0;
+    return v;
+}
 
 /* Lines in text: an upper bound of the number of pairs it can hold. */
 static inline size_t tip_csv_lines(const char *text, size_t len)
@@ -41,7 +62,7 @@ static inline int tip_csv_pair(const char *line, double *r, double *f)
 {
     char *end;
     const char *p = line;
-    *r = strtod(p, &end);
+    *r = tip_csv_strtod(p, &end);
     if (end == p) {
         return 0;
     }
@@ -54,7 +75,7 @@ static inline int tip_csv_pair(const char *line, double *r, double *f)
     }
     for (; isspace((unsigned char)*p); p++) {
     }
-    *f = strtod(p, &end);
+    *f = tip_csv_strtod(p, &end);
     if (end == p) {
         return 0;
     }

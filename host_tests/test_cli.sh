@@ -332,6 +332,19 @@ csv=$($MDR curve --profile powerlaw --C 5e4 --n 2 --E 1e6 --w 0.05 --a-max 1e-5 
 near "$(printf '%s\n' "$csv" | tail -1 | cut -d, -f3)" "$($MDR curve $P --a-max 1e-5 --n 20 --arith f64 | tail -1 | cut -d, -f3)" 1e-12 && ok ||
     bad "powerlaw n = 2, C = 1/(2R) = paraboloid R"
 refuse 'count once' curve $P --a-max 1e-5 --n 20 --points 20
+# a radius refused part-way: one line, no partial CSV (every row is computed
+# before the first is written; helper-24, stop 56: the header and 4 rows, then
+# the refusal)
+refuse 'MDR_E_RADIUS' curve $P --a-max 0 --n 10
+refuse 'MDR_E_RADIUS' curve --profile sphere --R 1e-6 --E 1e6 --w 0.05 --a-max 2e-6 --n 10
+refuse 'MDR_E_OVERFLOW' curve --profile cone --theta 0.5 --E 1e6 --w 0.05 --a-max 1e30 --n 3
+# a nonzero number below double's range is refused, not read as 0: flags
+# and lists (helper-24, stop 56: --w 1e-400 ran with w = 0, exit 0)
+for arith in f32 f64; do
+    refuse "^mdr: --w: not a finite number: 1e-400" eq --profile paraboloid --R 10e-6 --E 1e6 --w 1e-400 --a 2e-6 --arith $arith
+done
+refuse "^mdr: --path: value 2 is not a finite number" cycle $P --control grips --path 0,1e-400,0 \
+    --steps-per-segment 4 --a-max 2e-6
 
 # every number checked before it is used, in every arithmetic
 for arith in f32 f64; do
