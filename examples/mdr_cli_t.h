@@ -317,6 +317,18 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             taken = CLI_SFX(mdr_engine_init)(&eng, &t0, (CLI_T)A->E, (CLI_T)A->w, (CLI_T)A->w_adv, (CLI_T)A->k_m) ==
                     MDR_OK;
         }
+        if (taken && tab.rim0 == 2u) { /* a power law's x^n, n not 1 or 2 */
+            free(qnodes);
+            free(nodes);
+            fprintf(stderr,
+                    "mdr: %sengine (--springs, --a-max, table to %.6g m): the pull-off lies in the first two of %u "
+                    "springs (%.6g m wide), whose quadratics do not resolve the power law's C r^n for n other than 1 "
+                    "and 2; use more springs or a lower --a-max, so that the pull-off radius (mdr critical) spans two "
+                    "springs or more (%s, status %d)\n",
+                    A->q31 ? "q31 " : "", (double)tab.h * (double)tab.n, (unsigned)tab.n, (double)tab.h, cli_stname(st),
+                    (int)st);
+            return 2;
+        }
         if (taken) {
             free(qnodes);
             free(nodes);

@@ -66,7 +66,10 @@ typedef struct {
                                         first kink: g' infinite above it) lies inside spring 0,
                                         0 < rim < h, where no quadratic spring resolves it; the
                                         engines' inits refuse an adhesion whose pull-off may lie
-                                        there (MDR_E_PARAM). Set by the table builders. */
+                                        there (MDR_E_PARAM). 2: a power law C x^n, n not 1 or 2,
+                                        which spring 0's quadratic is not: the inits refuse an
+                                        adhesion whose pull-off the table puts in spring 0 or 1
+                                        (MDR_E_PARAM). 0: neither. Set by the table builders. */
 } mdr_table_f32;
 
 /** Energy bookkeeping of every engine of this arithmetic: embedded in a
@@ -260,8 +263,10 @@ mdr_status mdr_table_init_g_f32(mdr_table_f32 *tab, mdr_node_f32 *node,
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_PARAM (E, w, w_adv;
  *         or, with w > 0, a pull-off so deep inside the table's first
  *         spring that it is not resolved: MDR_ENGINE_ADH_COND; or, on a
- *         table whose flat's rim lies inside spring 0 (rim0), a pull-off
- *         that may lie there, docs/accuracy.md),
+ *         table whose flat's rim lies inside spring 0 (rim0 = 1), a pull-off
+ *         that may lie there, docs/accuracy.md; on a power law's table
+ *         (rim0 = 2), a pull-off in spring 0 or 1 or none found,
+ *         docs/engine.md),
  *         MDR_E_CONTROL (k_m < 0, or (2 E*) / k_m or 1/k_m not
  *         finite in the arithmetic: 2 E* is formed first, so with a machine
  *         E* above half the largest value is refused), MDR_E_SIZE (table
