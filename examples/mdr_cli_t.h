@@ -389,9 +389,22 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         const double unit = mdr_host_q31_unit(&Q, A->control);
         const char *un = A->control == MDR_CONTROL_GRIPS ? "D0" : A->control == MDR_CONTROL_LOAD ? "F0" : "Z0",
                    *si = A->control == MDR_CONTROL_LOAD ? "N" : "m";
-        if (mdr_host_q31_path(A->path, A->npath, A->steps, unit, INT32_MIN, &seg, &j) != MDR_OK) {
+        /* (a machine's z also at or above z_min, where a free body's depth
+         * z 2^sz fits: below it the step saturates, and before stop 56 an
+         * explicit --a-max let such a path through with exit 0 and wrong
+         * numbers after the pull-off, helper-23) */
+        const int32_t zmin = A->control == MDR_CONTROL_MACHINE && Q.e.machine ? Q.e.z_min : INT32_MIN;
+        if (mdr_host_q31_path(A->path, A->npath, A->steps, unit, zmin, &seg, &j) != MDR_OK) {
+            const double v = j == 0 ? A->path[seg] : mdr_host_path_value(A->path, A->steps, seg, j);
+            int32_t raw;
             free(qnodes);
             free(nodes);
+            if (mdr_host_q31_raw(v, unit, &raw) == MDR_OK && raw < zmin) {
+                return usage_errf("--path value %ld%s (%.17g m): below the q31 machine's least base position z_min = "
+                                  "%.9g m, where the free body's depth still fits the q31 range; a larger --a-max "
+                                  "(the q31 units grow with the table) or --arith f32", seg + 1 + (j != 0), j != 0 ? " (a tick toward it)" : "",
+                                  v, (double)zmin / 536870912.0 * unit);
+            }
             if (j == 0) {
                 return usage_errf("--path value %ld (%.9g %s): outside the q31 input range +-2 %s = +-%.9g %s",
                                   seg + 1, A->path[seg], si, un, 2.0 * unit, si);

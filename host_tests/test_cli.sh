@@ -350,6 +350,16 @@ j=$($MDR cycle --profile powerlaw --C 1e3 --n 1.5 --E 1e6 --w 0.05 --control gri
     --steps-per-segment 500 --springs 4096 --arith f64 2>&1 >/dev/null)
 cr=$($MDR critical --profile powerlaw --C 1e3 --n 1.5 --E 1e6 --w 0.05 --control grips --arith f64)
 near "$(key "$j" pull_off_F)" "$(key "$cr" F)" 1e-2 && ok || bad "power law n = 1.5 on 4096 springs: $j"
+# q31 through a machine: a base position below z_min (where a free body's
+# depth no longer fits) refused, with an explicit --a-max as with the default
+# extent (before stop 56 the former ran with exit 0, its energy 32 % low and
+# its free depths saturated: helper-23)
+refuse "^mdr: --path value 3 .*below the q31 machine's least base position z_min" cycle --profile paraboloid \
+    --R 20e-9 --E 1e9 --w 0.05 --control machine --k-machine 0.01 --path 0,20e-9,-1e-6 --steps-per-segment 200 \
+    --arith q31 --a-max 1.65e-8
+refuse "^mdr: --path value 3 .*below the q31 machine's least base position z_min" cycle --profile paraboloid \
+    --R 1e-4 --E 1e11 --w 0.005 --control machine --k-machine 20 --path 0,3e-6,-1e-6 --steps-per-segment 200 \
+    --arith q31
 # a nonzero number below double's range is refused, not read as 0: flags
 # and lists (helper-24, stop 56: --w 1e-400 ran with w = 0, exit 0)
 for arith in f32 f64; do
@@ -553,8 +563,10 @@ S="--profile sphere --R 20e-9 --E 1e9 --w 0.05 --w-adv 0.02 --steps-per-segment 
 SM="$S --k-machine 0.2 --control machine --path -5e-9,3e-9,-40e-9"
 $MDR cycle $SM --arith f64 >/dev/null 2>"$TMP/f.json" || bad "q31 widening: f64 run"
 af=$(key "$(cat "$TMP/f.json")" a_max)
-$MDR cycle $SM --arith q31 --a-max "$af" 2>&1 >/dev/null | grep -q 'q31 inputs or results saturated' &&
-    ok || bad "q31 machine path far past pull-off saturates on the f64 extent $af"
+# (on the f64 extent itself, an explicit --a-max, the path's end lies below
+# z_min: refused, as mdr help cycle says; before stop 56 it ran saturated,
+# exit 0, with a warning on stderr)
+refuse "below the q31 machine's least base position z_min" cycle $SM --arith q31 --a-max "$af"
 $MDR cycle $SM --arith q31 >"$TMP/q.csv" 2>"$TMP/q.json" && ! grep -q saturated "$TMP/q.json" &&
     ok || bad "q31 machine path far past pull-off runs unsaturated by default: $(head -c 300 "$TMP/q.json")"
 aq=$(key "$(cat "$TMP/q.json")" a_max)
