@@ -3,11 +3,13 @@
 # can use it (in make test, seconds each).
 #
 #   make install PREFIX=/usr/local [DESTDIR=]  headers in PREFIX/include/mdr,
-#                  libmdr.a, libmdr.so (soname libmdr.so.0) and
-#                  pkgconfig/mdr.pc in PREFIX/lib
+#                  libmdr.a, libmdr.so (soname libmdr.so.0), pkgconfig/mdr.pc
+#                  and the CMake package (cmake/mdr: find_package(mdr), the
+#                  target mdr::mdr on libmdr.a) in PREFIX/lib
 #   make install-check  install into build/, then compile, link and run
 #                  examples/cmake-consumer/main.c with
-#                  `pkg-config --cflags --libs mdr`
+#                  `pkg-config --cflags --libs mdr`, and the consumer project
+#                  with find_package(mdr) on that prefix
 #   make cmake-check    examples/cmake-consumer with CMake: add_subdirectory
 #                  and find_package (after cmake --install) on the host, and
 #                  cross-compiled for the Cortex-M4F (cmake/arm-none-eabi.cmake)
@@ -27,7 +29,7 @@ $(B)/host/libmdr.so: $(addprefix $(B)/pic/,mdr_f32.o mdr_f64.o mdr_q31.o mdr_sta
 	$(HOSTCC) -shared -Wl,-soname,libmdr.so.$(MDR_SOVERSION) $^ -o $@
 
 install: $(B)/host/libmdr.a $(B)/host/libmdr.so
-	install -d $(DESTDIR)$(PREFIX)/include/mdr $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -d $(DESTDIR)$(PREFIX)/include/mdr $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/lib/cmake/mdr
 	install -m 644 lib/include/*.h $(DESTDIR)$(PREFIX)/include/mdr/
 	install -m 644 $(B)/host/libmdr.a $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(B)/host/libmdr.so $(DESTDIR)$(PREFIX)/lib/libmdr.so.$(MDR_VERSION)
@@ -35,6 +37,9 @@ install: $(B)/host/libmdr.a $(B)/host/libmdr.so
 	ln -sf libmdr.so.$(MDR_SOVERSION) $(DESTDIR)$(PREFIX)/lib/libmdr.so
 	sed -e 's|@MDR_PC_PREFIX@|$(PREFIX)|; s|@MDR_PC_LIBDIR@|$${exec_prefix}/lib|; s|@PROJECT_VERSION@|$(MDR_VERSION)|' \
 	  mk/mdr.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/mdr.pc
+	install -m 644 cmake/mdrConfig.cmake $(DESTDIR)$(PREFIX)/lib/cmake/mdr/
+	install -m 644 mk/mdrTargets-make.cmake $(DESTDIR)$(PREFIX)/lib/cmake/mdr/mdrTargets.cmake
+	sed -e 's|@MDR_VERSION@|$(MDR_VERSION)|' mk/mdrConfigVersion.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/mdr/mdrConfigVersion.cmake
 
 install-check:
 	@rm -rf $(B)/install-check && mkdir -p $(B)

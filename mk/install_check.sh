@@ -25,7 +25,15 @@ $cc -std=c99 -Wall -Wextra -Werror "$dir/readme_host.c" $(pkg-config --cflags md
 "$dir/readme_host" > "$dir/readme_host.out"
 grep -q 'pull-off -2.204e-09 N' "$dir/readme_host.out" || {
     cat "$dir/readme_host.out"; echo "install-check: the README's C program does not print mdr critical's pull-off"; exit 1; }
+# the CMake consumer project with find_package(mdr 0.1) on the same prefix
+# (the package files make install writes: before stop 56 it wrote none, and
+# the README's "find_package(mdr) after installing it" failed; helper-24)
+cmake -S examples/cmake-consumer -B "$dir/cmake" -DCMAKE_PREFIX_PATH="$dir/prefix" > "$dir/cmake.log" 2>&1 &&
+    cmake --build "$dir/cmake" >> "$dir/cmake.log" 2>&1 || {
+    cat "$dir/cmake.log"; echo "install-check: find_package(mdr) on the make install prefix failed"; exit 1; }
+"$dir/cmake/consumer" > "$dir/cmake.out"
 echo "install-check: make install PREFIX=... ($(cd "$dir/prefix" && find include lib -type f | wc -l) files); built with '$flags':"
 echo "  shared: $(cat "$dir/shared.out")"
 echo "  static: $(cat "$dir/static.out")"
 echo "  README.md host C program: $(cat "$dir/readme_host.out")"
+echo "  CMake find_package(mdr 0.1): $(cat "$dir/cmake.out")"
