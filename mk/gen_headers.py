@@ -58,10 +58,10 @@ def expand(template: pathlib.Path, sfx: str, ctype: str, cfg: str) -> str:
             " * (mdr_options.h). The comment below is the template's: read it with\n"
             " * MDR_T = %s and MDR_SFX(name) = name_%s.\n"
             " */\n"
-            "#ifndef %s\n#define %s\n\n#include \"%s.h\"\n\n#if %s\n\n"
+            "#ifndef %s\n#define %s\n\n#include \"%s.h\"\n\n#if %s\nMDR_BEGIN_DECLS\n\n"
             % (base, sfx, ctype, sfx, base, base, base, cfg, ctype, sfx,
                guard, guard, base, cfg) +
-            head + body.rstrip("\n") + "\n\n#endif /* %s */\n\n#endif /* %s */\n" % (cfg, guard))
+            head + body.rstrip("\n") + "\n\nMDR_END_DECLS\n#endif /* %s */\n\n#endif /* %s */\n" % (cfg, guard))
 
 
 def main() -> int:

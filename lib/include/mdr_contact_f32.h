@@ -16,6 +16,7 @@
 #include "mdr_contact.h"
 
 #if MDR_CFG_F32
+MDR_BEGIN_DECLS
 
 /*
  * mdr_contact_t.h: declarations of one arithmetic of the contact module.
@@ -295,6 +296,7 @@ mdr_status mdr_critical_f32(const mdr_contact_f32 *c, uint8_t control,
  */
 mdr_status mdr_default_start_f32(const mdr_contact_f32 *c, float *a_start);
 
+MDR_END_DECLS
 #endif /* MDR_CFG_F32 */
 
 #endif /* MDR_CONTACT_F32_H */

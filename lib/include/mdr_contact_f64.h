@@ -16,6 +16,7 @@
 #include "mdr_contact.h"
 
 #if MDR_CFG_F64
+MDR_BEGIN_DECLS
 
 /*
  * mdr_contact_t.h: declarations of one arithmetic of the contact module.
@@ -295,6 +296,7 @@ mdr_status mdr_critical_f64(const mdr_contact_f64 *c, uint8_t control,
  */
 mdr_status mdr_default_start_f64(const mdr_contact_f64 *c, double *a_start);
 
+MDR_END_DECLS
 #endif /* MDR_CFG_F64 */
 
 #endif /* MDR_CONTACT_F64_H */

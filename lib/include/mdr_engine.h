@@ -76,7 +76,9 @@
                                it in the mdr_energy_<type> given to its init) */
 
 /** Short English name of an event code ("pull-off", ...). Never NULL. */
+MDR_BEGIN_DECLS
 const char *mdr_event_str(uint8_t event);
+MDR_END_DECLS
 
 /* the declarations per arithmetic, written out from mdr_engine_t.h by
  * mk/gen_headers.py (make headers) */

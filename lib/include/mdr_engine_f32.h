@@ -16,6 +16,7 @@
 #include "mdr_engine.h"
 
 #if MDR_CFG_F32
+MDR_BEGIN_DECLS
 
 /*
  * mdr_engine_t.h: declarations of one arithmetic of the spring engine.
@@ -320,6 +321,7 @@ uint8_t mdr_engine_clear_flags_f32(mdr_engine_f32 *e);
 mdr_status mdr_engine_outputs_f32(mdr_engine_f32 *e, uint8_t outputs);
 #endif /* MDR_CFG_ENGINE */
 
+MDR_END_DECLS
 #endif /* MDR_CFG_F32 */
 
 #endif /* MDR_ENGINE_F32_H */

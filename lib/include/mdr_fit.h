@@ -66,7 +66,9 @@
 
 /** Name of a regime ("JKR", "transition", "DMT"); "none" for 0 and unknown
  *  values. Never NULL. */
+MDR_BEGIN_DECLS
 const char *mdr_regime_str(uint8_t regime);
+MDR_END_DECLS
 
 /* the declarations per arithmetic, written out from mdr_fit_t.h by
  * mk/gen_headers.py (make headers) */

@@ -16,6 +16,7 @@
 #include "mdr_fit.h"
 
 #if MDR_CFG_F32
+MDR_BEGIN_DECLS
 
 /*
  * mdr_fit_t.h: declarations of one arithmetic of the fit module.
@@ -286,6 +287,7 @@ mdr_status mdr_fit_model_f32(const mdr_contact_f32 *c, float k_m, float z0, floa
 mdr_status mdr_tabor_f32(const mdr_contact_f32 *c, float z_e, float a_c, float *mu, float *R,
                               uint8_t *regime);
 
+MDR_END_DECLS
 #endif /* MDR_CFG_F32 */
 
 #endif /* MDR_FIT_F32_H */

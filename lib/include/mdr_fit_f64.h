@@ -16,6 +16,7 @@
 #include "mdr_fit.h"
 
 #if MDR_CFG_F64
+MDR_BEGIN_DECLS
 
 /*
  * mdr_fit_t.h: declarations of one arithmetic of the fit module.
@@ -286,6 +287,7 @@ mdr_status mdr_fit_model_f64(const mdr_contact_f64 *c, double k_m, double z0, do
 mdr_status mdr_tabor_f64(const mdr_contact_f64 *c, double z_e, double a_c, double *mu, double *R,
                               uint8_t *regime);
 
+MDR_END_DECLS
 #endif /* MDR_CFG_F64 */
 
 #endif /* MDR_FIT_F64_H */

@@ -46,6 +46,7 @@
 #include "mdr_engine.h"
 
 #if MDR_CFG_Q31
+MDR_BEGIN_DECLS
 
 /** Sticky flag of the q31 engine: an input or a result saturated. */
 #define MDR_FLAG_SAT 4u
@@ -300,6 +301,7 @@ float mdr_q31_out(const mdr_engine_q31 *e, uint8_t q, int32_t v);
 float mdr_q31_energy(const mdr_engine_q31 *e, int64_t v);
 
 #endif
+MDR_END_DECLS
 #endif /* MDR_CFG_Q31 */
 
 #endif /* MDR_Q31_H */

@@ -16,6 +16,7 @@
 #include "mdr_scene.h"
 
 #if MDR_CFG_F32
+MDR_BEGIN_DECLS
 
 /*
  * mdr_scene_t.h: declarations of one arithmetic of the table-free scene
@@ -155,6 +156,7 @@ mdr_status mdr_scene_step_z_f32(mdr_scene_f32 *s, float z, mdr_step_f32 *out);
 uint8_t mdr_scene_clear_flags_f32(mdr_scene_f32 *s);
 #endif /* MDR_CFG_SCENE */
 
+MDR_END_DECLS
 #endif /* MDR_CFG_F32 */
 
 #endif /* MDR_SCENE_F32_H */

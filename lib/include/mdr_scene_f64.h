@@ -16,6 +16,7 @@
 #include "mdr_scene.h"
 
 #if MDR_CFG_F64
+MDR_BEGIN_DECLS
 
 /*
  * mdr_scene_t.h: declarations of one arithmetic of the table-free scene
@@ -155,6 +156,7 @@ mdr_status mdr_scene_step_z_f64(mdr_scene_f64 *s, double z, mdr_step_f64 *out);
 uint8_t mdr_scene_clear_flags_f64(mdr_scene_f64 *s);
 #endif /* MDR_CFG_SCENE */
 
+MDR_END_DECLS
 #endif /* MDR_CFG_F64 */
 
 #endif /* MDR_SCENE_F64_H */

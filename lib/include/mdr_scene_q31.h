@@ -53,6 +53,7 @@
 #include "mdr_scene.h"
 
 #if MDR_CFG_Q31 && MDR_CFG_SCENE
+MDR_BEGIN_DECLS
 
 /** A q31 scene: units, constants and state. Caller-owned; fill it with
  *  mdr_scene_init_q31_f32() or _f64(), change it only through the step
@@ -162,5 +163,6 @@ float mdr_scene_q31_out(const mdr_scene_q31 *s, uint8_t q, int32_t v);
 float mdr_scene_q31_energy(const mdr_scene_q31 *s, int64_t v);
 #endif
 
+MDR_END_DECLS
 #endif /* MDR_CFG_Q31 && MDR_CFG_SCENE */
 #endif /* MDR_SCENE_Q31_H */

@@ -21,6 +21,16 @@
 
 #include "mdr_options.h"
 
+/** The public functions have C linkage in a C++ translation unit too
+ *  (firmware written in C++ includes these headers as they are). */
+#ifdef __cplusplus
+#define MDR_BEGIN_DECLS extern "C" {
+#define MDR_END_DECLS }
+#else
+#define MDR_BEGIN_DECLS
+#define MDR_END_DECLS
+#endif
+
 /** Status code of every fallible call: MDR_OK or a negative named error.
  *  int8_t, not an enum, so that its size is the same on every ABI. */
 typedef int8_t mdr_status;
@@ -123,6 +133,8 @@ typedef int8_t mdr_status;
 
 /** Short English name of a status code ("ok", "null pointer", ...).
  *  Never returns NULL; unknown codes give "unknown status". */
+MDR_BEGIN_DECLS
 const char *mdr_status_str(mdr_status s);
+MDR_END_DECLS
 
 #endif /* MDR_TYPES_H */
