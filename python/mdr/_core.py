@@ -89,9 +89,28 @@ def control_code(control, where):
         raise Error(lib.MDR_E_CONTROL, "%s: control %r (load, grips or machine)" % (where, control)) from None
 
 
-def broadcast(*xs):
-    """(shape, flat float64 contiguous arrays) of the broadcast inputs."""
-    arrs = np.broadcast_arrays(*[np.asarray(x, dtype=np.float64) for x in xs])
+def real_array(x, where, name):
+    """x (a number or an array of them) as a float64 array: real numbers only.
+    A bool, a string, None, complex or object values are refused (TypeError:
+    numpy had read eq(True) as a = 1 m, eq("1e-6") as a number, None as NaN
+    and complex values by their real part; helper-24, stop 56), and a masked
+    array with masked elements (ValueError: numpy reads under the mask)."""
+    if x is None or isinstance(x, (bool, np.bool_, str, bytes)):
+        raise TypeError("%s: %s must be a real number or an array of them, not %r" % (where, name, x))
+    if np.ma.isMaskedArray(x):
+        if np.ma.getmaskarray(x).any():
+            raise ValueError("%s: %s has masked elements; pass the unmasked ones" % (where, name))
+        x = np.ma.getdata(x)
+    a = np.asarray(x)
+    if a.dtype.kind not in "iuf":
+        raise TypeError("%s: %s must be real numbers, not an array of %s" % (where, name, a.dtype))
+    return a.astype(np.float64, copy=False)
+
+
+def broadcast(where, names, xs):
+    """(shape, flat float64 contiguous arrays) of the broadcast inputs xs
+    (named names: real numbers, real_array)."""
+    arrs = np.broadcast_arrays(*[real_array(x, where, n) for n, x in zip(names, xs)])
     return arrs[0].shape, [np.ascontiguousarray(a).reshape(-1) for a in arrs]
 
 

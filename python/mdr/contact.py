@@ -173,7 +173,7 @@ class Contact:
     def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None):
         """Call the C loop name over the broadcast inputs; (shape, out, flags,
         the flat inputs)."""
-        shape, flat = broadcast(*inputs)
+        shape, flat = broadcast(what, names, inputs)
         n = flat[0].size
         out = np.empty((ncols, n))
         flags = np.empty((nflags, n), dtype=np.uint8) if nflags else None
@@ -236,6 +236,9 @@ class Contact:
         the contact). a_start [m]: the equilibrium radius retraction starts
         from (default: default_start()). Returns a Critical (a, d, F, jumps)."""
         ctl = control_code(control, "critical")
+        if k_machine is not None and ctl != lib.MDR_CONTROL_MACHINE:
+            # (echoed and ignored before stop 56; mdr critical refuses it too)
+            raise TypeError("critical: k_machine is the machine's stiffness; control %r takes none" % (control,))
         if a_start is None:
             a_start = self.default_start()
         k, a_start = narrow(self.arith, "critical", k_machine=0.0 if k_machine is None else k_machine,

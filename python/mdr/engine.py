@@ -9,7 +9,7 @@ import collections
 
 import numpy as np
 
-from ._core import ARITHS, Error, check, control_code, dptr, event_name, ffi, lib
+from ._core import ARITHS, Error, check, control_code, dptr, event_name, ffi, lib, real_array
 from .contact import Contact
 
 #: one event of a run (MDR_EV_*): kind ("contact", "jump-in", "jump",
@@ -224,7 +224,7 @@ class Engine:
         .value the control value and .partial the Run of the ticks before it
         (the engine stays as after the last of them)."""
         ctl = control_code(control, "Engine.run")
-        path = np.ascontiguousarray(path, dtype=np.float64)
+        path = np.ascontiguousarray(real_array(path, "Engine.run", "path"))
         if path.ndim != 1 or path.size < 2:
             raise Error(lib.MDR_E_PARAM, "Engine.run: path must be a 1-D sequence of 2 or more values")
         steps = steps_per_segment

@@ -148,22 +148,26 @@ def test_tip_equals_cli(cli, tmp_path, control, arith):
     args = ["--profile", "table", "--file", str(path_file), "--E", fmt(E), "--w", fmt(w), "--w-adv", fmt(w_adv),
             "--control", control, "--arith", arith, "--springs", "512", "--path", ",".join(map(fmt, path)),
             "--steps-per-segment", "900", "--k-machine", fmt(k)]
-    cols, names, summary, rc = run_cli(cli, args)
-    assert rc == 0, summary
     eng = mdr.Engine.from_tip(r, f, E=E, w=w, springs=512, w_adv=w_adv, k_machine=k, arith=arith)
     if arith == "q31" and control == "machine":
-        # after the pull-off (z = -84 nm) the free body's d follows z to the
-        # end of q31's int32 (4 D0 = 119 nm): the CLI saturates there and
-        # warns, the package refuses that tick; every tick before it is the CLI's
+        # after the pull-off (z = -84 nm) the free body's d follows z, which
+        # q31 holds down to z_min (4 D0 = 119 nm here): a path to -150 nm is
+        # refused by the CLI before it runs (since stop 56; it saturated
+        # and warned, exit 0) and by the package at the tick that passes z_min
+        p = subprocess.run([cli, "cycle"] + args, capture_output=True, text=True)
+        assert p.returncode == 2 and p.stdout == "" and len(p.stderr.splitlines()) == 1
+        assert "below the q31 machine's least base position z_min" in p.stderr
         with pytest.raises(mdr.Error) as err:
             eng.run(path, control=control, steps_per_segment=900)
-        run = err.value.partial
-        assert err.value.status == "MDR_E_OVERFLOW" and "saturated" in summary["stderr"]
-        assert cols[1][len(run)] == -4 * eng.q31_units["D0"] < cols[1][len(run) - 1]
-        same_as_cli(run, cols, names, summary, arith, prefix=True)
-    else:
-        run = eng.run(path, control=control, steps_per_segment=900)
-        same_as_cli(run, cols, names, summary, arith)
+        assert err.value.status == "MDR_E_OVERFLOW" and err.value.partial.pull_off is not None
+        # the same tip and engine to -110 nm: every tick as the CLI's
+        path = [-2e-9, 2e-9, -110e-9]
+        args[args.index("--path") + 1] = ",".join(map(fmt, path))
+        eng = mdr.Engine.from_tip(r, f, E=E, w=w, springs=512, w_adv=w_adv, k_machine=k, arith=arith)
+    cols, names, summary, rc = run_cli(cli, args)
+    assert rc == 0, summary
+    run = eng.run(path, control=control, steps_per_segment=900)
+    same_as_cli(run, cols, names, summary, arith)
     assert run.pull_off is not None and run.pull_off.F0 < 0
 
 

@@ -250,3 +250,35 @@ def test_no_silent_nan(arith, profile, params):
             assert all(np.isfinite(v) for v in values if not isinstance(v, bool)), (a, out)
             answered += 1
     assert answered > 100
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_inputs_real_numbers_only(arith):
+    """A bool, a string, None, complex or object values are no radius (numpy
+    had read eq(True) as a = 1 m, eq("1e-6") as a number, None as NaN, and
+    complex values by their real part: helper-24, stop 56); a masked array is
+    taken only without masked elements; integers are numbers."""
+    c = mdr.Contact("paraboloid", R=10e-6, arith=arith, **P)
+    for bad in (True, np.bool_(False), "1e-6", b"1e-6", None, [1e-6, None], np.array([1e-6 + 0j]),
+                np.array([1e-6], dtype=object), [True, False]):
+        with pytest.raises(TypeError, match="eq: a must be "):
+            c.eq(bad)
+    with pytest.raises(TypeError, match="stress: r must be "):
+        c.stress(2e-6, "0")
+    with pytest.raises(TypeError, match="eq: d must be "):
+        c.eq(2e-6, d=True)
+    with pytest.raises(TypeError, match="equivalent: x must be "):
+        c.equivalent(None)
+    m = np.ma.masked_array([1e-6, 2e-6], mask=[False, True])
+    with pytest.raises(ValueError, match="eq: a has masked elements"):
+        c.eq(m)
+    ok = c.eq(np.ma.masked_array([1e-6, 2e-6], mask=[False, False])).F
+    assert np.array_equal(ok, c.eq(np.array([1e-6, 2e-6])).F)
+    assert c.eq(np.int64(1)).F == c.eq(1.0).F and c.eq([1, 2]).F[1] == c.eq(2.0).F
+    # a machine's stiffness under another control is refused, as by mdr critical
+    with pytest.raises(TypeError, match="k_machine"):
+        c.critical("load", k_machine=0.2)
+    # the engine's path too
+    e = mdr.Engine(c, springs=64)
+    with pytest.raises(TypeError, match="Engine.run: path must be "):
+        e.run([False, True], control="grips", steps_per_segment=4)
