@@ -625,6 +625,10 @@ static int cli_collect(int argc, char **argv, int first, const char *const *bool
             kv[*n].val = NULL;
         } else if (eq != NULL) {
             kv[*n].val = eq + 1;
+        } else if (i + 1 < argc && strncmp(argv[i + 1], "--", 2) == 0 && argv[i + 1][2] != '\0') {
+            /* (--a --d 0: --a's value missing, not "0" a stray word; a value
+             * that starts with -- goes as --a=VALUE) */
+            return usage_errf("flag needs a value: %s (found the flag %s)", kv[*n].name, argv[i + 1]);
         } else if (i + 1 < argc) {
             kv[*n].val = argv[++i];
         } else {
@@ -719,12 +723,23 @@ static const char *const usage_cmd[NCMD] = {
 /* --help anywhere, `mdr help [CMD]`, --version: 0, or -1 to go on */
 static int cli_help(int argc, char **argv)
 {
-    if (argc >= 2 && strcmp(argv[1], "--version") == 0 && argc == 2) {
+    if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
+        if (argc > 2) {
+            return usage_error("--version takes no arguments", argv[2]);
+        }
         printf("mdr (libmdr %d.%d)\n", MDR_VERSION_MAJOR, MDR_VERSION_MINOR);
         return 0;
     }
     if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
                       strcmp(argv[1], "help") == 0)) {
+        if (argc > 2 && strcmp(argv[1], "help") != 0) {
+            return usage_error("--help takes no arguments (mdr help COMMAND)", argv[2]);
+        }
+        if (argc == 3 && (strcmp(argv[2], "help") == 0 || strcmp(argv[2], "--help") == 0 ||
+                          strcmp(argv[2], "-h") == 0)) {
+            fputs(usage_main, stdout); /* (help on help: the commands) */
+            return 0;
+        }
         if (argc == 3 && strcmp(argv[1], "help") == 0) {
             int k;
             for (k = 0; k < NCMD; k++) {
@@ -751,6 +766,14 @@ static int outside_f32(double v)
     double m = v < 0 ? -v : v;
     return m > (double)FLT_MAX || (m != 0.0 && m < (double)FLT_MIN);
 }
+
+/* C's keywords (C99 and C11), which no --name may be */
+static const char *const c_keywords[] = {
+    "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum", "extern",
+    "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return", "short", "signed",
+    "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile", "while", "_Bool",
+    "_Complex", "_Imaginary", "_Alignas", "_Alignof", "_Atomic", "_Generic", "_Noreturn", "_Static_assert",
+    "_Thread_local"};
 
 /* the commands that take a flag (bits of CMD_*) */
 #define C_(c) (1u << (c))
@@ -889,6 +912,11 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
             }
             if (j == 0) {
                 return usage_error("--name must be a C identifier", v);
+            }
+            for (j = 0; j < sizeof c_keywords / sizeof c_keywords[0]; j++) {
+                if (strcmp(v, c_keywords[j]) == 0) { /* (the table's .c did not compile: helper-24, stop 56) */
+                    return usage_error("--name must be a C identifier, not a keyword", v);
+                }
             }
             A->name = v;
         } else {
@@ -1103,8 +1131,8 @@ int main(int argc, char **argv)
     int nkv, k, rc;
 
     if (argc < 2) {
-        fputs(usage_main, stderr);
-        return 2;
+        /* (one line, as every refusal; the commands: mdr --help) */
+        return usage_error("no command (mdr --help lists them)", NULL);
     }
     rc = cli_help(argc, argv);
     if (rc >= 0) {

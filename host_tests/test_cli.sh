@@ -279,7 +279,7 @@ has_units() {
     jcheck "$1" "all(k in j['units'] for o in (j, j['input']) for k, v in o.items() if isinstance(v, float) or (isinstance(v, int) and not isinstance(v, bool) and k not in $COUNTS))"
 }
 
-# help and version: stdout, exit 0; bare mdr: the usage on stderr, exit 2
+# help and version: stdout, exit 0
 for args in "--help" "help" "-h" "eq --help" "critical --help" "curve -h" "stress --help" "cycle --help" \
     "table --help" "fit --help" "help cycle" "help fit" "eq $P --a 1e-6 --help"; do
     out=$($MDR $args 2>"$TMP/err")
@@ -288,8 +288,20 @@ done
 [ "$($MDR cycle --help | head -1)" != "$($MDR eq --help | head -1)" ] && ok || bad "each command has its own help"
 out=$($MDR --version 2>"$TMP/err")
 [ $? -eq 0 ] && printf '%s' "$out" | grep -Eq '^mdr \(libmdr [0-9]+\.[0-9]+\)$' && [ ! -s "$TMP/err" ] && ok || bad "mdr --version: $out"
-out=$($MDR 2>"$TMP/err")
-[ $? -eq 2 ] && [ -z "$out" ] && head -1 "$TMP/err" | grep -q '^usage: mdr' && ok || bad "bare mdr: usage on stderr, exit 2"
+# bare mdr: one line naming the problem, exit 2, as every refusal (since
+# stop 56; it printed the 23 lines of the usage on stderr: helper-24)
+refuse '^mdr: no command \(mdr --help lists them\)$'
+# help on help: the commands; extra words after --version and --help refused
+for h in "help help" "help --help" "help -h"; do
+    [ "$($MDR $h)" = "$($MDR --help)" ] && ok || bad "mdr $h: the commands"
+done
+refuse '^mdr: --version takes no arguments: x$' --version x
+refuse '^mdr: --help takes no arguments \(mdr help COMMAND\): extra$' --help extra
+# a flag without its value, the next flag after it: named as such
+refuse '^mdr: flag needs a value: --a \(found the flag --d\)$' eq $P --a --d 0
+# a C keyword as the table's name (its .c did not compile)
+refuse '^mdr: --name must be a C identifier, not a keyword: int$' table --profile paraboloid --R 1e-5 \
+    --a-max 1e-6 --springs 16 --name int
 refuse 'help: unknown command: teapot' help teapot
 refuse 'unknown command: frobnicate' frobnicate $P
 
