@@ -121,6 +121,20 @@ static int parse_num(const char *s, double *v)
     return *end == '\0' && is_finite(*v);
 }
 
+/* why a number did not parse (parse_num, parse_list's value s): a nonzero
+ * number below double's range (tip_csv_strtod), or not a finite number */
+static const char *num_problem(const char *s)
+{
+    char *end;
+    const int e0 = errno;
+    double v;
+    errno = 0;
+    v = strtod(s, &end);
+    const int under = end != s && errno == ERANGE && v == 0.0;
+    errno = e0;
+    return under ? "a nonzero number below double's range (it underflows to 0)" : "not a finite number";
+}
+
 /* "V1,V2,..." -> malloc'd array of finite numbers: the count, 0 out of
  * memory, or -(1 + i) when value i (from 0) is not a finite number */
 static long parse_list(const char *s, double **out)
@@ -238,6 +252,11 @@ static long load_tip(const char *file, double **r, double **f, double **s, long 
     *s = NULL;
     if (n < 0 || *r == NULL || *f == NULL || *lines == NULL) {
         return -1; /* named by read_table() */
+    }
+    if (n < MDR_TABLE_MIN_POINTS) { /* (the library's MDR_E_TABLE named no count: helper-24) */
+        (void)usage_errf("%s: %ld points; a tip needs at least %d rows r,f (r from 0)", file, n,
+                         MDR_TABLE_MIN_POINTS);
+        return -1;
     }
     *s = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof **s);
     if (*s == NULL) {
@@ -922,7 +941,7 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
         } else {
             names[nflag] = f;
             if (!parse_num(v, &vals[nflag])) {
-                return usage_errf("%s: not a finite number: %s", f, v);
+                return usage_errf("%s: %s: %s", f, num_problem(v), v);
             }
             nflag++;
         }

@@ -372,10 +372,18 @@ refuse "^mdr: --path value 3 .*below the q31 machine's least base position z_min
 refuse "^mdr: --path value 3 .*below the q31 machine's least base position z_min" cycle --profile paraboloid \
     --R 1e-4 --E 1e11 --w 0.005 --control machine --k-machine 20 --path 0,3e-6,-1e-6 --steps-per-segment 200 \
     --arith q31
+# a tip file with fewer than 3 points: named with its count (was MDR_E_TABLE's
+# "order, count or g(0)": helper-24)
+printf 'r,f\n0,0\n1e-7,1e-9\n' > "$TMP/two.csv"
+refuse 'two.csv: 2 points; a tip needs at least 3 rows' table --profile table --file "$TMP/two.csv" --a-max 1e-7 \
+    --springs 16
+printf 'r,f\n' > "$TMP/zero.csv"
+refuse 'zero.csv: 0 points; a tip needs at least 3 rows' eq --profile table --file "$TMP/zero.csv" --E 1e6 \
+    --w 0.05 --a 5e-8
 # a nonzero number below double's range is refused, not read as 0: flags
 # and lists (helper-24, stop 56: --w 1e-400 ran with w = 0, exit 0)
 for arith in f32 f64; do
-    refuse "^mdr: --w: not a finite number: 1e-400" eq --profile paraboloid --R 10e-6 --E 1e6 --w 1e-400 --a 2e-6 --arith $arith
+    refuse "^mdr: --w: a nonzero number below double.s range \\(it underflows to 0\\): 1e-400$" eq --profile paraboloid --R 10e-6 --E 1e6 --w 1e-400 --a 2e-6 --arith $arith
 done
 refuse "^mdr: --path: value 2 is not a finite number" cycle $P --control grips --path 0,1e-400,0 \
     --steps-per-segment 4 --a-max 2e-6
