@@ -115,7 +115,8 @@ MDR_TEST_NOT_APPLICABLE("f32, f64, q31, the spring engine and every profile")
 #include "test_util.h"
 
 /* On a target (QEMU, soft double on the M4F) the longest sweeps take
- * every TGT_STRIDE-th point (rim_in_spring0's adhesions,
+ * every TGT_STRIDE-th point (rim_in_spring0's adhesions, powerlaw_pull_off_spring0's
+ * exponents (0.75, 2.5, 1),
  * first_equilibrium_coarse_tables' spring counts, tiny_tables_float's f64
  * moduli, a decade apart on the host; rim_in_spring0_sampled the diagonal
  * of its tables): the same
@@ -2347,6 +2348,57 @@ static double ft_min(int load, double R, double b, double E, double w, double L,
     return best;
 }
 
+/* The f64 (m = 0) or f32 (m = 1) engine of a table pair initialised on
+ * painted instances (0x5a), w_adv = 0, no machine: its status; a refusal
+ * leaves the instance as it was. */
+static mdr_status init_either(int m, mdr_engine_f64 *e64, const mdr_table_f64 *t64, mdr_engine_f32 *e32,
+                              const mdr_table_f32 *t32, double E, double w)
+{
+    mdr_engine_f64 s64;
+    mdr_engine_f32 s32;
+    mdr_status r;
+    memset(&s64, 0x5a, sizeof s64);
+    memset(&s32, 0x5a, sizeof s32);
+    *e64 = s64;
+    *e32 = s32;
+    r = m == 0 ? mdr_engine_init_f64(e64, t64, E, w, 0, 0)
+               : mdr_engine_init_f32(e32, t32, (float)E, (float)w, 0.0f, 0);
+    if (r != MDR_OK) {
+        assert_memory_equal(e64, &s64, sizeof s64);
+        assert_memory_equal(e32, &s32, sizeof s32);
+    }
+    return r;
+}
+
+/* That engine (initialised) through a grips cycle 0 -> dt -> d1 and, from a
+ * fresh init, a load cycle 0 -> Ft -> F1 (2000 ticks out, n1 back): each
+ * pulls off on the way back; the state before the jump, {d0, F0, a0}, in
+ * g[] and l[] */
+static void pull_offs(int m, mdr_engine_f64 *e64, const mdr_table_f64 *t64, mdr_engine_f32 *e32,
+                      const mdr_table_f32 *t32, double E, double w, double dt, double d1, double Ft, double F1,
+                      long n1, double g[3], double l[3])
+{
+    mdr_step_f64 p64;
+    mdr_step_f32 p32;
+    if (m == 0) {
+        assert_true(run64(e64, MDR_CONTROL_GRIPS, 0, dt, 2000, &p64, NULL) == 0);
+        assert_true(run64(e64, MDR_CONTROL_GRIPS, dt, d1, n1, &p64, NULL));
+        g[0] = p64.d0, g[1] = p64.F0, g[2] = p64.a0;
+        assert_int_equal(mdr_engine_init_f64(e64, t64, E, w, 0, 0), MDR_OK);
+        assert_true(run64(e64, MDR_CONTROL_LOAD, 0, Ft, 2000, &p64, NULL) == 0);
+        assert_true(run64(e64, MDR_CONTROL_LOAD, Ft, F1, n1, &p64, NULL));
+        l[0] = p64.d0, l[1] = p64.F0, l[2] = p64.a0;
+    } else {
+        assert_true(run32(e32, MDR_CONTROL_GRIPS, 0, dt, 2000, &p32) == 0);
+        assert_true(run32(e32, MDR_CONTROL_GRIPS, dt, d1, n1, &p32));
+        g[0] = p32.d0, g[1] = p32.F0, g[2] = p32.a0;
+        assert_int_equal(mdr_engine_init_f32(e32, t32, (float)E, (float)w, 0.0f, 0), MDR_OK);
+        assert_true(run32(e32, MDR_CONTROL_LOAD, 0, Ft, 2000, &p32) == 0);
+        assert_true(run32(e32, MDR_CONTROL_LOAD, Ft, F1, n1, &p32));
+        l[0] = p32.d0, l[1] = p32.F0, l[2] = p32.a0;
+    }
+}
+
 /* A power law C r^n with n neither 1 nor 2 (helper-23's attack, stop 56):
  * spring 0's quadratic is not its g, and a pull-off inside spring 0 came
  * out O(1) off with MDR_OK (n = 1.5: -73 % with springs 16 to 30 times the
@@ -2371,7 +2423,7 @@ static void powerlaw_pull_off_spring0(void **st)
     int refused = 0, accepted = 0;
     unsigned i, j, m;
     (void)st;
-    for (i = 0; i < sizeof ns / sizeof ns[0]; i++) {
+    for (i = 0; i < sizeof ns / sizeof ns[0]; i += TGT_STRIDE) {
         /* C for a pull-off radius near 100 nm: C a^n ~ sqrt(2 pi w/E*) a^(1/2) */
         const double p[3] = {sqrt(2 * PI_ * 0.05 / 1e6) * pow(1e-7, 0.5 - ns[i]), ns[i], 0};
         const int exact = ns[i] == 1.0 || ns[i] == 2.0;
@@ -2401,44 +2453,20 @@ static void powerlaw_pull_off_spring0(void **st)
             assert_int_equal(mdr_profile_eval_f64(&c, 0.3 * L, &dt, NULL, NULL), MDR_OK);
             Ft = top.F + 2 * E * top.a * (dt - top.d);
             for (m = 0; m < 2; m++) { /* 0: f64, 1: f32 */
-                mdr_engine_f64 e64, s64;
-                mdr_engine_f32 e32, s32;
-                mdr_step_f64 p64;
-                mdr_step_f32 p32;
-                double Fg, Fl, err;
-                mdr_status r;
-                memset(&s64, 0x5a, sizeof s64);
-                memset(&s32, 0x5a, sizeof s32);
-                e64 = s64;
-                e32 = s32;
-                r = m == 0 ? mdr_engine_init_f64(&e64, &t64, E, w, 0, 0)
-                           : mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, 0.0f, 0);
+                mdr_engine_f64 e64;
+                mdr_engine_f32 e32;
+                double g[3], l[3], Fg, Fl, err;
+                mdr_status r = init_either((int)m, &e64, &t64, &e32, &t32, E, w);
                 if (r != MDR_OK) {
                     assert_int_equal(r, MDR_E_PARAM);
                     assert_false(exact);
-                    assert_memory_equal(&e64, &s64, sizeof e64);
-                    assert_memory_equal(&e32, &s32, sizeof e32);
                     refused++;
                     continue;
                 }
                 accepted++;
-                if (m == 0) {
-                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, 0, dt, 2000, &p64, NULL) == 0);
-                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, dt, cg.d - dt, 4000, &p64, NULL));
-                    Fg = p64.F0;
-                    assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, 0, 0), MDR_OK);
-                    assert_true(run64(&e64, MDR_CONTROL_LOAD, 0, Ft, 2000, &p64, NULL) == 0);
-                    assert_true(run64(&e64, MDR_CONTROL_LOAD, Ft, 2 * cl.F, 4000, &p64, NULL));
-                    Fl = p64.F0;
-                } else {
-                    assert_true(run32(&e32, MDR_CONTROL_GRIPS, 0, dt, 2000, &p32) == 0);
-                    assert_true(run32(&e32, MDR_CONTROL_GRIPS, dt, cg.d - dt, 4000, &p32));
-                    Fg = p32.F0;
-                    assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, 0.0f, 0), MDR_OK);
-                    assert_true(run32(&e32, MDR_CONTROL_LOAD, 0, Ft, 2000, &p32) == 0);
-                    assert_true(run32(&e32, MDR_CONTROL_LOAD, Ft, 2 * cl.F, 4000, &p32));
-                    Fl = p32.F0;
-                }
+                pull_offs((int)m, &e64, &t64, &e32, &t32, E, w, dt, cg.d - dt, Ft, 2 * cl.F, 4000, g, l);
+                Fg = g[1];
+                Fl = l[1];
                 /* (a control's pull-off judged where the cycle's top, a = 0.3 L,
                  * lies beyond its fold: n = 0.75's under load, 81 times the grips
                  * pull-off radius, is beyond the table's end here) */
@@ -2497,23 +2525,13 @@ static void rim_in_spring0(void **st)
             Fd = ft_d(al, R, b, sqrt(2 * PI_ * w / E));
             in0 = ag < h || al < h;
             for (m = 0; m < 2; m++) { /* 0: f64, 1: f32 */
-                mdr_engine_f64 e64, s64;
-                mdr_engine_f32 e32, s32;
-                mdr_step_f64 p64;
-                mdr_step_f32 p32;
-                double Fg, dg, Fl, dl, ag_e, al_e, err; /* (ag_e, al_e: the engine's pull-off radii) */
-                mdr_status r;
-                memset(&s64, 0x5a, sizeof s64);
-                memset(&s32, 0x5a, sizeof s32);
-                e64 = s64;
-                e32 = s32;
-                r = m == 0 ? mdr_engine_init_f64(&e64, &t64, E, w, 0, 0)
-                           : mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, 0.0f, 0);
+                mdr_engine_f64 e64;
+                mdr_engine_f32 e32;
+                double g[3], l[3], Fg, dg, Fl, dl, ag_e, al_e, err; /* (ag_e, al_e: the engine's pull-off radii) */
+                mdr_status r = init_either((int)m, &e64, &t64, &e32, &t32, E, w);
                 if (r != MDR_OK) {
                     assert_int_equal(r, MDR_E_PARAM);
                     assert_true(bh[i] < 1.0); /* a rim on a node: never */
-                    assert_memory_equal(&e64, &s64, sizeof e64);
-                    assert_memory_equal(&e32, &s32, sizeof e32);
                     refused++;
                     continue;
                 }
@@ -2524,23 +2542,9 @@ static void rim_in_spring0(void **st)
                 }
                 assert_false(in0);
                 accepted0 += bh[i] < 1.0;
-                if (m == 0) {
-                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, 0, dt, 2000, &p64, NULL) == 0);
-                    assert_true(run64(&e64, MDR_CONTROL_GRIPS, dt, 2 * dmin, 2000, &p64, NULL));
-                    Fg = p64.F0, dg = p64.d0, ag_e = p64.a0;
-                    assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, 0, 0), MDR_OK);
-                    assert_true(run64(&e64, MDR_CONTROL_LOAD, 0, Ft, 2000, &p64, NULL) == 0);
-                    assert_true(run64(&e64, MDR_CONTROL_LOAD, Ft, 2 * Fmin, 2000, &p64, NULL));
-                    Fl = p64.F0, dl = p64.d0, al_e = p64.a0;
-                } else {
-                    assert_true(run32(&e32, MDR_CONTROL_GRIPS, 0, dt, 2000, &p32) == 0);
-                    assert_true(run32(&e32, MDR_CONTROL_GRIPS, dt, 2 * dmin, 2000, &p32));
-                    Fg = p32.F0, dg = p32.d0, ag_e = p32.a0;
-                    assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, 0.0f, 0), MDR_OK);
-                    assert_true(run32(&e32, MDR_CONTROL_LOAD, 0, Ft, 2000, &p32) == 0);
-                    assert_true(run32(&e32, MDR_CONTROL_LOAD, Ft, 2 * Fmin, 2000, &p32));
-                    Fl = p32.F0, dl = p32.d0, al_e = p32.a0;
-                }
+                pull_offs((int)m, &e64, &t64, &e32, &t32, E, w, dt, 2 * dmin, Ft, 2 * Fmin, 2000, g, l);
+                dg = g[0], Fg = g[1], ag_e = g[2];
+                dl = l[0], Fl = l[1], al_e = l[2];
                 if (bh[i] >= 1.0) {
                     continue; /* (a rim on a node: its springs' resolution, rim_pull_off_f32) */
                 }
