@@ -258,7 +258,7 @@ static long load_tip(const char *file, double **r, double **f, double **s, long 
                          MDR_TABLE_MIN_POINTS);
         return -1;
     }
-    *s = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof **s);
+    *s = malloc((size_t)(n - 1) * sizeof **s); /* (n >= 3: above) */
     if (*s == NULL) {
         (void)usage_error("out of memory reading", file);
         return -1;
