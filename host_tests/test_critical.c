@@ -566,6 +566,74 @@ static void table_worn_tip_kendall(void **st)
 /* a sampled flattened tip below its threshold, under all controls, against
  * the analytic flattened tip (the table reproduces it to rounding); and a
  * sampled sphere against the exact sphere within the model's error */
+/* Sampled cones (f = r tan(theta), a straight first interval) whose grips
+ * fold lies in the first sample interval (helper-25, stop 56: the walk
+ * stopped at a bound that is then the fold itself and answered a = d = F = 0,
+ * MDR_OK, in 57 of these 400 scenes in f64 and 73 in f32): 400 scenes, theta
+ * 0.05 .. 1.45, E* 1e3 .. 1e11 Pa, w 1e-6 .. 1 J/m^2, 3 .. 62 uniform
+ * samples to 1.5 (m - 1) grips pull-off radii; grips and a machine 1e3
+ * times stiffer than E* times the pull-off radius, f64 and f32, against the
+ * cone's critical state: a within REL_CONE64 = 1e-9 (f64) and REL32 (f32)
+ * and F likewise. */
+#define REL_CONE64 1e-9
+static void table_cone_fold_first_interval(void **st)
+{
+    double worst[2] = {0, 0};
+    int it, k;
+    (void)st;
+    for (it = 0; it < 400; it++) {
+        const double th = 0.05 + 1.4 * (it % 37) / 37.0, E = pow(10, 3 + (it % 9)), w = pow(10, -6 + (it % 7));
+        const int m = 3 + (it * 7) % 60;
+        const double pc[3] = {th, 0, 0};
+        mdr_contact_f64 cone, c;
+        mdr_contact_f32 cf;
+        mdr_critstate_f64 oc, o;
+        mdr_critstate_f32 of;
+        double a0, rmax, r[64], sl[64];
+        float rf[64], sf[64];
+        int i;
+        assert_int_equal(mdr_contact_init_f64(&cone, MDR_PROFILE_CONE, pc, E, w), MDR_OK);
+        assert_int_equal(mdr_default_start_f64(&cone, &a0), MDR_OK);
+        assert_int_equal(mdr_critical_f64(&cone, MDR_CONTROL_GRIPS, 0, a0, &oc), MDR_OK);
+        rmax = oc.a * (m - 1) * 1.5;
+        for (i = 0; i < m; i++) {
+            r[i] = rmax * i / (m - 1);
+            rf[i] = (float)r[i];
+        }
+        for (i = 0; i + 1 < m; i++) {
+            sl[i] = tan(th);
+            sf[i] = (float)sl[i];
+        }
+        assert_int_equal(mdr_contact_init_table_f64(&c, r, sl, (uint16_t)m, E, w), MDR_OK);
+        assert_int_equal(mdr_contact_init_table_f32(&cf, rf, sf, (uint16_t)m, (float)E, (float)w), MDR_OK);
+        for (k = 0; k < 2; k++) { /* grips; a stiff machine */
+            const uint8_t ctl = k == 0 ? MDR_CONTROL_GRIPS : MDR_CONTROL_MACHINE;
+            const double km = k == 0 ? 0 : 1e3 * E * oc.a;
+            mdr_critstate_f64 ock = oc;
+            double e64, e32, as;
+            float asf;
+            if (k == 1) {
+                assert_int_equal(mdr_critical_f64(&cone, ctl, km, a0, &ock), MDR_OK);
+            }
+            assert_int_equal(mdr_default_start_f64(&c, &as), MDR_OK);
+            assert_int_equal(mdr_default_start_f32(&cf, &asf), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&c, ctl, km, as, &o), MDR_OK);
+            assert_int_equal(mdr_critical_f32(&cf, ctl, (float)km, asf, &of), MDR_OK);
+            e64 = fmax(fabs(o.a / ock.a - 1), fabs(o.F / ock.F - 1));
+            e32 = fmax(fabs(of.a / ock.a - 1), fabs(of.F / ock.F - 1));
+            if (!(e64 <= REL_CONE64) || !(e32 <= REL32)) {
+                print_message("theta %.3f E %g w %g m %d control %u: f64 a %.6g F %.6g, f32 a %.6g F %.6g, cone a %.6g "
+                              "F %.6g\n", th, E, w, m, ctl, o.a, o.F, (double)of.a, (double)of.F, ock.a, ock.F);
+            }
+            worst[0] = fmax(worst[0], e64);
+            worst[1] = fmax(worst[1], e32);
+            assert_true(e64 <= REL_CONE64 && e32 <= REL32);
+        }
+    }
+    print_message("sampled cones, fold in the first interval, 400 scenes x grips, stiff machine: worst f64 %.2e, "
+                  "f32 %.2e of the cone's a and F\n", worst[0], worst[1]);
+}
+
 static void table_critical_vs_profiles(void **st)
 {
     const double R = 1e-5, E = 1e6, w = 0.05, astar = cbrt(9 * M_PI * R * R * w / (8 * E));
@@ -751,6 +819,7 @@ int main(void)
         cmocka_unit_test(table_exact_for_quadratics),
         cmocka_unit_test(table_order),
         cmocka_unit_test(table_worn_tip_kendall),
+        cmocka_unit_test(table_cone_fold_first_interval),
         cmocka_unit_test(table_critical_vs_profiles),
         cmocka_unit_test(table_f32_height_offset),
         cmocka_unit_test(table_eq_and_stress),
