@@ -634,6 +634,70 @@ static void table_cone_fold_first_interval(void **st)
                   "f32 %.2e of the cone's a and F\n", worst[0], worst[1]);
 }
 
+/* The stress inside a sampled worn tip (a flattened tip R = 1, b = 0.3
+ * sampled every 0.025 to 1, its rim on a sample; the samples' model is that
+ * tip exactly): the samples' g' peaks as
+ * 1/sqrt just above the rim, and one quadrature panel over it gave
+ * -689194 Pa at r = 0.1 for the flattened tip's 0.085 (helper-25, stop 56).
+ * At a = 0.5, r from 0 to 0.49 (the rim itself MDR_E_SINGULAR, as the
+ * flattened tip's): f64 within TOL_WORN64 = 1e-6 and f32 within TOL_WORN32 =
+ * 2e-3 of the largest |sigma| of the analytic flattened tip's stress in f64
+ * (measured 4.8e-9 and 5.7e-4). */
+#define TOL_WORN64 1e-6
+#define TOL_WORN32 2e-3
+static void table_worn_tip_stress(void **st)
+{
+    const double R = 1.0, b = 0.3, a = 0.5, E = 1.0, w = 0.05, pf[3] = {R, b, 0};
+    double r[41], sl[40], worst[2] = {0, 0}, smax = 0, x;
+    float rf[41], sf[40];
+    mdr_contact_f64 ft, c;
+    mdr_contact_f32 cf;
+    int i, k;
+    (void)st;
+    for (i = 0; i < 41; i++) {
+        r[i] = 0.025 * i;
+        rf[i] = (float)r[i];
+    }
+    for (i = 0; i < 40; i++) {
+        /* (the flattened tip: f = (r^2 - b^2)/(2R) past the rim, whose
+         * piecewise-linear f' the samples' model is exactly) */
+        const double f0 = r[i] <= b ? 0 : (r[i] * r[i] - b * b) / (2 * R);
+        const double f1 = r[i + 1] <= b ? 0 : (r[i + 1] * r[i + 1] - b * b) / (2 * R);
+        sl[i] = (f1 - f0) / (r[i + 1] - r[i]);
+        sf[i] = (float)sl[i];
+    }
+    assert_int_equal(mdr_contact_init_f64(&ft, MDR_PROFILE_FLATTIP, pf, E, w), MDR_OK);
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, sl, 41, E, w), MDR_OK);
+    assert_int_equal(mdr_contact_init_table_f32(&cf, rf, sf, 41, (float)E, (float)w), MDR_OK);
+    for (x = 0; x < 0.49; x += 0.0049) {
+        double s0;
+        assert_int_equal(mdr_stress_f64(&ft, a, x, &s0), MDR_OK);
+        smax = fmax(smax, fabs(s0));
+    }
+    for (k = 0; k <= 100; k++) {
+        const double xr = 0.49 * k / 100.0;
+        double s0, s64;
+        float s32;
+        if (xr == r[12]) {
+            continue;
+        }
+        assert_int_equal(mdr_stress_f64(&ft, a, xr, &s0), MDR_OK);
+        assert_int_equal(mdr_stress_f64(&c, a, xr, &s64), MDR_OK);
+        assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)xr, &s32), MDR_OK);
+        worst[0] = fmax(worst[0], fabs(s64 - s0) / smax);
+        worst[1] = fmax(worst[1], fabs((double)s32 - s0) / smax);
+    }
+    {
+        double s;
+        float s32;
+        assert_int_equal(mdr_stress_f64(&c, a, r[12], &s), MDR_E_SINGULAR); /* (the rim: sample 12) */
+        assert_int_equal(mdr_stress_f32(&cf, (float)a, rf[12], &s32), MDR_E_SINGULAR);
+    }
+    print_message("sampled worn tip's stress against the flattened tip's, r/a 0 .. 0.98: f64 %.2e, f32 %.2e of "
+                  "max|sigma|\n", worst[0], worst[1]);
+    assert_true(worst[0] <= TOL_WORN64 && worst[1] <= TOL_WORN32);
+}
+
 static void table_critical_vs_profiles(void **st)
 {
     const double R = 1e-5, E = 1e6, w = 0.05, astar = cbrt(9 * M_PI * R * R * w / (8 * E));
@@ -820,6 +884,7 @@ int main(void)
         cmocka_unit_test(table_order),
         cmocka_unit_test(table_worn_tip_kendall),
         cmocka_unit_test(table_cone_fold_first_interval),
+        cmocka_unit_test(table_worn_tip_stress),
         cmocka_unit_test(table_critical_vs_profiles),
         cmocka_unit_test(table_f32_height_offset),
         cmocka_unit_test(table_eq_and_stress),
