@@ -1572,6 +1572,97 @@ static void rim_pull_off_f32(void **st)
                   worst);
 }
 
+/* The tick on which the f32 pull-off at a flattened tip's rim happens, not
+ * only the fold's values (rim_pull_off_f32): a helper's scene (stop 57; R
+ * = 1 mm, b = 50 um, E* = 1e10 Pa, w = 1e-7 and 1e-6 J/m^2, tables to
+ * 60 um) on 1 024, 4 096 and 16 384 springs, fixed grips and fixed load
+ * (w_adv = w): pressed to 3 times Kendall's control in RIMTICK_TICKS
+ * ticks, retracted to -2 times it in twice as many (the helper's path).
+ * Every tick in contact stays above Kendall's control less
+ * TOL_RIM32_NODE of it, the pull-off comes within one tick of passing it
+ * and not before, and under load every tick in contact with the edge at
+ * the rim has d = F/(2E* b) (G(b) = 0) within half of what the table's g
+ * moves over one ulp of t above the rim (f32's resolution of d there:
+ * 2.6e-11 m at 1 024 springs, 1.0e-10 at 16 384, Kendall's depth 5.6e-11
+ * at w = 1e-7) and TOL_RIMTICK_D of Kendall's depth (measured: 5.7e-4).
+ * Before: the fast path converged on the rim's node and set the band's
+ * end to the control itself, not U there: the contact held to 1.89 times
+ * Kendall's depth (1.22 at 1 024 springs), under load past 1.9 times its
+ * force; a scan from that node that took the flat below it for the fold
+ * whatever the control (the first fix's own defect) pulled off at a tenth
+ * of Kendall's depth (a helper's attack, stop 57). */
+#define RIMTICK_TICKS 20000
+#define TOL_RIMTICK_D 1e-3
+#ifndef MDR_TARGET_TEST /* (host only: 720 000 ticks; the target runs the same fast path in rim_pull_off_f32) */
+static void rim_pull_off_tick_f32(void **st)
+{
+    static const uint16_t ns[] = {1024, 4096, 16384};
+    static const float ws[] = {1e-7f, 1e-6f};
+    const float pf[3] = {1e-3f, 5e-5f, 0}, E = 1e10f;
+    const double b = 5e-5;
+    double worst = 0, worstd = 0;
+    unsigned i, j, c, kr;
+    (void)st;
+    for (j = 0; j < 2; j++) {
+        const double w = ws[j], Fk = -sqrt(8 * PI_ * b * b * b * E * w), dk = -sqrt(2 * PI_ * b * w / E);
+        mdr_contact_f32 cf;
+        assert_int_equal(mdr_contact_init_f32(&cf, MDR_PROFILE_FLATTIP, pf, E, ws[j]), MDR_OK);
+        for (i = 0; i < sizeof ns / sizeof ns[0]; i++) {
+            mdr_table_f32 t32;
+            double gres, e1;
+            float t1;
+            assert_int_equal(mdr_table_init_profile_f32(&t32, nodes32, ns[i], &cf, 6e-5f), MDR_OK);
+            for (kr = 1; kr < ns[i] && nodes32[kr + 1].g == 0; kr++) {
+            }
+            /* g of the rim's spring one ulp of t above the rim's node */
+            t1 = nextafterf(nodes32[kr].t, 1.0f);
+            e1 = ((double)t1 - nodes32[kr].t) * ((double)t1 + nodes32[kr].t) / t32.h;
+            gres = e1 * ((nodes32[kr + 1].g - nodes32[kr].g) + 6 * nodes32[kr].q / t32.h * (1 - e1));
+            for (c = 0; c < 2; c++) {
+                const bool load = c == 1;
+                const uint8_t ctl = load ? MDR_CONTROL_LOAD : MDR_CONTROL_GRIPS;
+                const double uk = load ? Fk : dk, step = 5 * fabs(uk) / (2 * RIMTICK_TICKS);
+                const step32_fn f = step32_of(ctl);
+                mdr_engine_f32 e32;
+                double umin = 0, upo = 0;
+                long k;
+                int po = 0;
+                assert_int_equal(mdr_engine_init_f32(&e32, &t32, E, ws[j], ws[j], 0), MDR_OK);
+                for (k = 1; k <= 3 * RIMTICK_TICKS && !po; k++) {
+                    const double uu = k <= RIMTICK_TICKS ? -3 * uk * (double)k / RIMTICK_TICKS
+                                                          : -3 * uk - step * (double)(k - RIMTICK_TICKS);
+                    mdr_step_f32 o;
+                    assert_int_equal(f(&e32, (float)uu, &o), MDR_OK);
+                    if (o.event == MDR_EV_PULL_OFF) {
+                        po = 1;
+                        upo = uu;
+                    } else if (o.a > 0) {
+                        umin = fmin(umin, uu);
+                        if (load && fabs(o.a - b) <= 1e-6 * b) {
+                            worstd = fmax(worstd, (fabs(o.d - o.F / (2.0 * E * b)) - 0.5 * gres) / fabs(dk));
+                        }
+                    }
+                }
+                assert_true(po);
+                worst = fmax(worst, (uk - umin) / fabs(uk));
+                if (!(umin >= uk * (1 + TOL_RIM32_NODE)) || !(upo >= uk - step * (1 + 1e-6)) ||
+                    !(upo <= uk * (1 - TOL_RIM32_NODE))) {
+                    print_message("N = %u, w = %g, %s: deepest in contact %.9g, pull-off at %.9g, Kendall %.9g\n",
+                                  ns[i], w, load ? "load" : "grips", umin, upo, uk);
+                }
+                assert_true(umin >= uk * (1 + TOL_RIM32_NODE));
+                assert_true(upo >= uk - step * (1 + 1e-6));
+                assert_true(upo <= uk * (1 - TOL_RIM32_NODE)); /* (not before it) */
+            }
+        }
+    }
+    print_message("flattened tip's f32 pull-off tick: deepest control in contact %.2e of Kendall's beyond it; "
+                  "d at the rim under load beyond half g's change per ulp of t: %.2e of Kendall's depth\n",
+                  worst, worstd);
+    assert_true(worstd <= TOL_RIMTICK_D);
+}
+#endif
+
 /* The adhesion a float engine resolves (MDR_ENGINE_ADH_COND; the init's
  * adh_resolved, mdr_table_float.inc). A paraboloid R = 1 um, w = 0.05 on
  * 64 and 1 024 springs to 40 nm, E* from 1e12 Pa up in steps of 10^0.5
@@ -2710,6 +2801,9 @@ int main(void)
         cmocka_unit_test(flat_punch_wall),
         cmocka_unit_test(rims_on_nodes),
         cmocka_unit_test(rim_pull_off_f32),
+#ifndef MDR_TARGET_TEST
+        cmocka_unit_test(rim_pull_off_tick_f32),
+#endif
         cmocka_unit_test(adhesion_resolved_float),
 #ifndef MDR_TARGET_TEST /* (its soft-double critical searches: host only; the target runs the same
                           inits in rim_in_spring0) */
