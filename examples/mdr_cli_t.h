@@ -131,7 +131,7 @@ static int CLI_SFX(q31_table_fail)(const struct cli_args *A, const CLI_SFX(mdr_t
     const unsigned n = tab->n;
     const double L = (double)tab->h * (double)n;
     double gmax = 0.0, Dg = 1.0, smax = 0.0, bmax = 0.0;
-    unsigned i;
+    unsigned i, imax = 0;
     if (st != MDR_E_OVERFLOW) {
         return cli_fail(st == MDR_E_SIZE ? "q31 table (--springs must be a power of two)" : "q31 table", st);
     }
@@ -149,8 +149,21 @@ static int CLI_SFX(q31_table_fail)(const struct cli_args *A, const CLI_SFX(mdr_t
     for (i = 0; i < n; i++) {
         const double dg = (double)tab->node[i + 1].g - (double)tab->node[i].g, q = (double)tab->node[i].q;
         const double sl = (dg < 0.0 ? -dg : dg) * (double)n / Dg, b = (q < 0.0 ? -q : q) * 6.0 * (double)n / (L * Dg);
+        imax = sl > smax ? i : imax;
         smax = sl > smax ? sl : smax;
         bmax = b > bmax ? b : bmax;
+    }
+    if (smax / 8.0 >= bmax / 2.0 && smax >= 7.99 && imax + 2u < n) {
+        /* the steepest spring inside the table (a flat's rim, a kink: g
+         * rises like a square root above it): its slope in max|g| per
+         * spring falls with fewer springs or a longer table, and grows as
+         * the table shortens (the flattened tip R = 1 mm, b = 50 um on
+         * 1 024 springs: 32.5 at a_max = 60 um, 120 at 51 um; a helper's
+         * find, stop 57: the message said "lower --a-max") */
+        return usage_errf("q31 table: the profile is too steep inside the table (spring slope %.3g >= 8 of Q3.28, "
+                          "in max|g| per spring, at x = %.3g m: a rim or kink); fewer --springs (%u) or a higher "
+                          "--a-max (%.9g m)",
+                          smax, (double)tab->h * (double)imax, n, L);
     }
     if (smax / 8.0 >= bmax / 2.0 && smax >= 7.99) {
         return usage_errf("q31 table: the profile is too steep over the table (spring slope %.3g >= 8 of "

@@ -614,6 +614,13 @@ for n in 4096 16384; do
     refuse '^mdr: q31 table: the profile is too steep over the table' \
         cycle $S --control grips --path 0,1e-7,-1e-7 --steps-per-segment 10 --springs $n --a-max 9.99e-6 --arith q31
 done
+# the steepest spring inside the table (the flattened tip's rim): fewer
+# springs or a longer table, not a shorter one (which steepens it: the message
+# said "lower --a-max", helper-27 at stop 57); the remedy it names is accepted
+F5="--profile flattip --R 1e-3 --b 5e-5 --E 1e10 --w 1e-6 --control grips --path 0,1e-10,-1e-9 --steps-per-segment 20"
+refuse '^mdr: q31 table: the profile is too steep inside the table .*at x = 5e-05 m: a rim or kink\); fewer --springs \(1024\) or a higher --a-max' \
+    cycle $F5 --springs 1024 --arith q31 --a-max 6e-5
+$MDR cycle $F5 --springs 256 --arith q31 --a-max 1e-4 >/dev/null 2>&1 && ok || bad "flattened tip in q31 on 256 springs to 100 um"
 # a profile or material out of range: the line names the argument and the
 # status by name and number (it said "profile/material ... (status -3)",
 # helper-22 at stop 54)

@@ -6,7 +6,7 @@ mdr_fit_t.h; docs/fitting.md), the same C code as `mdr fit --curve`.
 import numpy as np
 
 from ._build import FIT_DOUBLES
-from ._core import Error, dptr, ffi, lib, narrow
+from ._core import Error, dptr, ffi, lib, narrow, real_array
 from .contact import Contact
 
 METHODS = {"full": lib.MDR_FIT_FULL, "two-point": lib.MDR_FIT_TWO_POINT}
@@ -126,7 +126,8 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     straight to its pull-off: pinned until it ruptures, or, in noisy data
     without unpinned=True, a pinned top the noise hides), MDR_E_RADIUS, ...
     TypeError: a bool for a number (k_machine, z_e, E0, w0), approach,
-    unpinned or flat_baseline other than True, False, 0 or 1. ValueError: arith, or masked
+    unpinned or flat_baseline other than True, False, 0 or 1, samples that
+    are not real numbers (complex, bool, strings, objects). ValueError: arith, or masked
     samples in z or F (pass the unmasked ones).
     """
     if arith not in ("f32", "f64"):
@@ -155,8 +156,11 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
         if isinstance(v, (str, bytes)) or v is None:
             raise TypeError("fit: %s must be an array of samples, not %r (read a file with numpy.loadtxt, "
                             "or use `mdr fit --curve FILE`)" % (name, v))
-    z = np.array(z, dtype=np.float64).copy(order="C")
-    F = np.array(F, dtype=np.float64).copy(order="C")
+    # real numbers only (real_array: complex samples were fitted by their real
+    # part with numpy's ComplexWarning, bool and object arrays read as numbers;
+    # helper-28, stop 57)
+    z = np.array(real_array(z, "fit", "z"), dtype=np.float64).copy(order="C")
+    F = np.array(real_array(F, "fit", "F"), dtype=np.float64).copy(order="C")
     if z.ndim != 1 or z.shape != F.shape:
         raise Error(lib.MDR_E_PARAM, "fit: z and F must be 1-D arrays of one length (got shapes %s and %s)"
                     % (z.shape, F.shape))

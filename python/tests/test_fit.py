@@ -323,6 +323,13 @@ def test_refusals(curve, arith):
             mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2, arith=arith, **{flag: "no"})
         with pytest.raises(TypeError):
             mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2, arith=arith, **{flag: 2})
+    # samples that are no real numbers: complex ones were fitted by their real
+    # part with only numpy's ComplexWarning (helper-28, stop 57)
+    for bad in (F + 0j, F.astype(object), F > 0):
+        with pytest.raises(TypeError, match="fit: F must be real numbers"):
+            mdr.fit(z, bad, "paraboloid", **tip)
+    with pytest.raises(TypeError, match="fit: z must be real numbers"):
+        mdr.fit(z + 1e-30j, F, "paraboloid", **tip)
     zm = np.ma.masked_array(z, mask=np.arange(len(z)) == 5)
     with pytest.raises(ValueError):
         mdr.fit(zm, F, "paraboloid", **tip)
