@@ -24,11 +24,14 @@
  *        piecewise-linear path: path[seg] + (path[seg+1] - path[seg]) j/steps.
  * @param path  the path's vertices (at least seg + 2 of them)
  * @param steps ticks per segment, >= 1; j = 0 is path[seg], j = steps is
- *              path[seg+1] up to rounding
+ *              path[seg+1] exactly (the formula's rounding is relative to the
+ *              larger vertex: a path 0, 1e20, -1e-3 ended at 0 instead of
+ *              -1e-3, in contact at a tensile force with no pull-off, status
+ *              ok; helper-30, stop 57)
  */
 static inline double mdr_host_path_value(const double *path, long steps, long seg, long j)
 {
-    return path[seg] + (path[seg + 1] - path[seg]) * (double)j / (double)steps;
+    return j == steps ? path[seg + 1] : path[seg] + (path[seg + 1] - path[seg]) * (double)j / (double)steps;
 }
 
 /** The q31 engine with its table and the SI units of its Q formats, in

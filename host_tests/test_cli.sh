@@ -443,10 +443,14 @@ $MDR cycle $FP --path 0,7.62939453125e-06,-7.62939453125e-06 >/dev/null 2>&1 && 
 refuse '^mdr: --path value 2 \(7.62939454e-06 N\): outside the q31 input range \+-2 F0 = \+-7.62939453e-06 N$' \
     cycle $FP --path 0,7.62939454e-06,-7.62939454e-06
 refuse '^mdr: --path value 3 \(-7.62939454e-06 N\): outside the q31 input range' cycle $FP --path 0,1e-6,-7.62939454e-06
-# every tick converted, not only the vertices: a + (b - a) 13/13 rounds
-# this b (raw 2^30, just in range) one ulp up, to raw 2^30 + 1
-refuse '^mdr: --path segment 1, tick 13 \(7.62939453480271[0-9]*e-06 N\): outside the q31 input range' \
-    cycle ${FP/--steps-per-segment 10/--steps-per-segment 13} --path -3.898088070211341e-06,7.629394534802712e-06
+# a segment's last tick is its vertex exactly: a + (b - a) 13/13 rounded
+# this b (raw 2^30, just in range) one ulp up, to raw 2^30 + 1, which was
+# refused until stop 57 (mdr_host_path_value; a path 0, 1e20, -1e-3 ended at
+# 0, in contact, no pull-off: helper-30); now it runs and ends on b
+$MDR cycle ${FP/--steps-per-segment 10/--steps-per-segment 13} --path -3.898088070211341e-06,7.629394534802712e-06 \
+    2>/dev/null | tail -1 | grep -q '^13,[^,]*,[^,]*,7.62939453125e-06,' && ok || bad "q31 segment ending on its vertex (2 F0)"
+$MDR cycle --profile paraboloid --R 10e-6 --E 1e6 --w 0.05 --control grips --path 0,1e20,-1e-3 --steps-per-segment 10 \
+    --arith f64 2>/dev/null | tail -1 | grep -q '^20,-0.001,-0.001,0,0,pull-off$' && ok || bad "path 0,1e20,-1e-3 ends on -1e-3"
 
 # tip files: bounded reads, errors with file:line, comma/tab/space separated
 start=$(date +%s)

@@ -4,9 +4,12 @@ adhesive axisymmetric contact (libmdr's contact module, lib/include/
 mdr_contact_t.h). SI units; compressive force and depth into the surface
 positive; w is the work of adhesion (a paraboloid pulls off at -1.5 pi w R).
 """
+import types
+
 import numpy as np
 
-from ._core import Error, broadcast, check, control_code, dptr, element_error, ffi, lib, narrow, shaped, shaped_bool
+from ._core import (Error, broadcast, check, control_code, dptr, element_error, ffi, lib, narrow, real_array, shaped,
+                    shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -101,6 +104,7 @@ class Contact:
         self._c = ffi.new("mdr_contact_%s *" % arith)
         if profile == "table":
             self._init_table(E, w, params)
+            self._frozen = True
             return
         kind, names = PROFILES[profile]
         missing = [n for n in names if n not in params]
@@ -113,12 +117,23 @@ class Contact:
         self.kind = kind
         vals = narrow(arith, "Contact(%r)" % profile, E=E, w=w, **{n: params[n] for n in names})
         self.E, self.w = vals[:2]
-        self.params = dict(zip(names, vals[2:]))
+        self.params = types.MappingProxyType(dict(zip(names, vals[2:])))
         p = [self.params[n] for n in names] + [0.0] * (3 - len(names))
         self.p = tuple(p)
         self.r = self.f = None
         check(self._f["mdr_contact_init"](self._c, kind, p, self.E, self.w),
               "Contact(%r, %s)" % (profile, self._args()))
+        self._frozen = True
+
+    def __setattr__(self, name, value):
+        # read-only once made: the C contact holds E*, w and the profile, and
+        # a changed attribute gave two physics on one object (c.w = 0.1:
+        # c.critical() with 0.05, Engine(c) and repr with 0.1; helper-30,
+        # stop 57). A new material: c.replace(E=..., w=...)
+        if getattr(self, "_frozen", False):
+            raise AttributeError("mdr.Contact is read-only (%s); c.replace(E=..., w=..., arith=...) makes "
+                                 "another" % name)
+        object.__setattr__(self, name, value)
 
     def _init_table(self, E, w, params):
         """Contact("table", r=..., f=...): the samples' slopes formed in
@@ -128,16 +143,19 @@ class Contact:
             raise TypeError("Contact('table') takes E, w, r, f (arrays of the radii and gap heights)%s" % (
                 "; unexpected " + ", ".join(sorted(set(params) - {"r", "f"})) if set(params) - {"r", "f"} else
                 "; missing " + ", ".join(sorted({"r", "f"} - set(params)))))
-        # copies: the contact must not change when the caller's arrays do
-        r = np.array(params["r"], dtype=np.float64).copy(order="C")
-        f = np.array(params["f"], dtype=np.float64).copy(order="C")
+        # copies: the contact must not change when the caller's arrays do;
+        # real numbers only, none masked (real_array: a masked outlier was read
+        # under its mask, the pull-off 6 000 times off; bool gaps read as 0/1 m,
+        # complex by their real part; helper-30, stop 57)
+        r = np.array(real_array(params["r"], "Contact('table')", "r"), dtype=np.float64).copy(order="C")
+        f = np.array(real_array(params["f"], "Contact('table')", "f"), dtype=np.float64).copy(order="C")
         if r.ndim != 1 or r.shape != f.shape or r.size > 65535:
             raise Error(lib.MDR_E_TABLE, "Contact('table'): r and f must be 1-D arrays of one length "
                         "%d ... 65535 (got shapes %s and %s)" % (lib.MDR_TABLE_MIN_POINTS, r.shape, f.shape))
         self.E, self.w = narrow(self.arith, "Contact('table')", E=E, w=w)
         self.profile = "table"
         self.kind = lib.MDR_PROFILE_TABLE
-        self.params = {}
+        self.params = types.MappingProxyType({})
         self.p = (0.0, 0.0, 0.0)
         r.flags.writeable = False
         f.flags.writeable = False

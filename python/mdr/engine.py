@@ -9,7 +9,7 @@ import collections
 
 import numpy as np
 
-from ._core import ARITHS, Error, check, control_code, dptr, event_name, ffi, lib, real_array
+from ._core import ARITHS, Error, check, control_code, dptr, event_name, ffi, lib, narrow, real_array
 from .contact import Contact
 
 #: one event of a run (MDR_EV_*): kind ("contact", "jump-in", "jump",
@@ -88,7 +88,7 @@ class Engine:
                                 "a_max is not taken")
             self._init_tip(contact.r, contact.f, "Engine(Contact('table'))")
         elif a_max is not None:
-            self._build(float(a_max))
+            self._build(narrow(arith, "Engine", a_max=a_max)[0])
 
     @classmethod
     def from_tip(cls, r, f, *, E, w, springs=1024, w_adv=0.0, k_machine=0.0, arith="f64"):
@@ -105,8 +105,8 @@ class Engine:
         return self
 
     def _init_tip(self, r, f, what):
-        r = np.ascontiguousarray(r, dtype=np.float64)
-        f = np.ascontiguousarray(f, dtype=np.float64)
+        r = np.ascontiguousarray(real_array(r, what, "r"))  # (real numbers, none masked: Contact('table'))
+        f = np.ascontiguousarray(real_array(f, what, "f"))
         if r.ndim != 1 or r.shape != f.shape or r.size > 65535:
             raise Error(lib.MDR_E_TABLE, "%s: r and f must be 1-D arrays of one length "
                         "<= 65535 (got %s and %s)" % (what, r.shape, f.shape))
@@ -128,10 +128,11 @@ class Engine:
         if not lib.MDR_SPRINGS_MIN <= springs <= lib.MDR_SPRINGS_MAX or (arith == "q31" and springs & (springs - 1)):
             raise Error(lib.MDR_E_SIZE, "Engine: springs = %d (%d ... %d; q31: a power of two)" % (
                 springs, lib.MDR_SPRINGS_MIN, lib.MDR_SPRINGS_MAX))
-        self.E, self.w = float(E), float(w)
+        # numbers only (narrow: a bool or a string was taken, k_machine=True as
+        # 1 N/m, E=True as 1 Pa; helper-30, stop 57)
+        self.E, self.w, self.w_adv, self.k_machine = narrow(arith, "Engine", E=E, w=w, w_adv=w_adv,
+                                                            k_machine=k_machine)
         self.springs = int(springs)
-        self.w_adv = float(w_adv)
-        self.k_machine = float(k_machine)
         self.arith = arith
         self._arith = ARITHS[arith]
         self._x = None
@@ -196,6 +197,12 @@ class Engine:
         if o is None or self.arith != "q31":
             return None
         return {"L": o.L, "D0": o.D0, "F0": o.F0, "Z0": o.Z0}
+
+    def __copy__(self):
+        # (copy.copy shared the C engine: running the copy moved the original;
+        # helper-30, stop 57. deepcopy and pickle refuse too)
+        raise TypeError("mdr.Engine holds the C engine's state and cannot be copied; make another with "
+                        "mdr.Engine(contact, ...)")
 
     def reset(self):
         """Back to separated, without history or dissipated energy, on the

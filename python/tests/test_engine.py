@@ -308,3 +308,81 @@ def test_refused_tick_keeps_the_engine():
     assert touching and d == e.partial.d[-1] and F == e.partial.F[-1] and a <= 2e-6
     back = eng.run([e.partial.d[-1], -1e-6], control="grips", steps_per_segment=100)
     assert back.pull_off is not None
+
+
+def test_q31_saturated_tick_refused_every_run():
+    """A q31 tick whose results saturate is refused in every run, not only in
+    the first (the sticky MDR_FLAG_SAT was tested against its value at the
+    run's start: after one refused run the next took saturated ticks, d 93 %
+    off; helper-30, stop 57), and the engine stays as after the last tick
+    taken (the refused tick had been applied)."""
+    c = mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6)
+    e = mdr.Engine(c, springs=1024, w_adv=0.025, k_machine=0.2, arith="q31")
+    e.run([0, 1e-6, -20e-6], control="machine", steps_per_segment=100)
+    far = -1.9 * e.q31_units["Z0"]  # z in range, a separated body's d below its range
+    for _ in range(3):
+        before = e.state
+        with pytest.raises(mdr.Error) as err:
+            e.run([-20e-6, far], control="machine", steps_per_segment=10)
+        assert err.value.status == "MDR_E_OVERFLOW" and "saturated" in str(err.value)
+        assert e.state == (before if err.value.index == 0 else (0.0, err.value.partial.d[-1], 0.0, False))
+        assert e.flags == 0
+    back = e.run([e.state[1], 1e-6], control="machine", steps_per_segment=50)
+    assert back.d[-1] > 0
+
+
+def test_engine_settings_are_numbers():
+    """A bool or a string where a number goes is refused (TypeError), as in
+    mdr.Contact (Engine(c, k_machine=True) ran with 1 N/m, a_max=True as 1
+    m, from_tip(E=True) as 1 Pa; helper-30, stop 57)."""
+    c = mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6)
+    for kw in ({"k_machine": True}, {"k_machine": "0.2"}, {"w_adv": "0.01"}, {"a_max": True}, {"a_max": "2e-5"}):
+        with pytest.raises(TypeError):
+            mdr.Engine(c, **kw)
+    r = np.linspace(0, 1e-6, 50)
+    for kw in ({"E": True, "w": 0.05}, {"E": 1e6, "w": True}, {"E": "1e6", "w": 0.05}):
+        with pytest.raises(TypeError):
+            mdr.Engine.from_tip(r, r**2 / 2e-5, **kw)
+
+
+def test_tip_samples_real_and_unmasked():
+    """Sampled tips take real numbers only, none masked (a masked outlier was
+    read under its mask: the pull-off 6 000 times off; bool gaps as 0/1 m;
+    helper-30, stop 57)."""
+    r = np.linspace(0, 8e-6, 200)
+    f = r**2 / 2e-5
+    fm = np.ma.masked_array(f.copy(), mask=np.arange(200) == 100)
+    fm.data[100] = 1e-3
+    with pytest.raises(ValueError, match="masked"):
+        mdr.Contact("table", E=1e6, w=0.05, r=r, f=fm)
+    with pytest.raises(ValueError, match="masked"):
+        mdr.Engine.from_tip(r, fm, E=1e6, w=0.05)
+    for bad in (f > 1e-9, f + 0j, f.astype(object), r.astype(str)):
+        with pytest.raises(TypeError):
+            mdr.Contact("table", E=1e6, w=0.05, r=r, f=bad)
+        with pytest.raises(TypeError):
+            mdr.Engine.from_tip(r, bad, E=1e6, w=0.05)
+    good = mdr.Contact("table", E=1e6, w=0.05, r=r, f=f)
+    assert good.critical("load").F == pytest.approx(-1.5 * np.pi * 0.05 * 10e-6, rel=1e-6)
+
+
+def test_contact_read_only_and_engine_not_copied():
+    """A Contact is read-only (c.w = 0.1 gave two physics on one object:
+    c.critical with 0.05, Engine(c) and repr with 0.1), its params and
+    samples too; copy.copy(Engine) shared the C engine (running the copy
+    moved the original): refused, as deepcopy and pickle (helper-30, stop 57)."""
+    import copy
+    c = mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6)
+    for name, v in (("w", 0.1), ("E", 2e6), ("profile", "cone"), ("new", 1)):
+        with pytest.raises(AttributeError, match="read-only"):
+            setattr(c, name, v)
+    with pytest.raises(TypeError):
+        c.params["R"] = 20e-6
+    assert c.w == 0.05 and c.replace(w=0.1).critical("grips").F == pytest.approx(2 * c.critical("grips").F)
+    t = mdr.Contact("table", E=1e6, w=0.05, r=np.linspace(0, 1e-6, 20), f=np.linspace(0, 1e-6, 20)**2 / 2e-5)
+    with pytest.raises(ValueError):
+        t.f[3] = 1.0
+    e = mdr.Engine(c)
+    for cp in (copy.copy, copy.deepcopy):
+        with pytest.raises(TypeError):
+            cp(e)
