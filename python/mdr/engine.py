@@ -146,14 +146,18 @@ class Engine:
         nq = ffi.new("mdr_node_q31[]", n) if self.arith == "q31" else ffi.NULL
         return n32, n64, nq
 
-    def _build(self, a_max):
+    def _build(self, a_max, path=None):
         c = self.contact
         x = ffi.new("mdrpy_engine *")
         nodes = self._alloc()
+        # (an a_max taken from the path says so: run([0, 1e300]) named an
+        # a_max = 1e30 the caller never gave; helper-30, stop 57)
         check(lib.mdrpy_engine_profile(x, self._arith, c.kind, list(c.p), self.E, self.w, self.w_adv,
                                        self.k_machine, self.springs, a_max, *nodes),
-              "Engine(%r, springs=%d, w_adv=%.9g, k_machine=%.9g, arith=%r, a_max=%.9g)" % (
-                  c.profile, self.springs, self.w_adv, self.k_machine, self.arith, a_max))
+              "Engine(%r, springs=%d, w_adv=%.9g, k_machine=%.9g, arith=%r, a_max=%.9g%s)" % (
+                  c.profile, self.springs, self.w_adv, self.k_machine, self.arith, a_max,
+                  "" if path is None else ", chosen from the run's path, whose largest value is %.9g" %
+                  float(np.max(path))))
         self._x, self._nodes, self.a_max = x, nodes, a_max
 
     def _info(self):
@@ -249,7 +253,7 @@ class Engine:
             else:
                 check(lib.mdrpy_extent(self._arith, c.kind, list(c.p), self.E, self.w, ctl, self.k_machine, pp,
                                        path.size, a_max), "Engine.run: default a_max")
-            self._build(a_max[0])
+            self._build(a_max[0], path)
         self._check_path(ctl, path, pp)
         n = 1 + (path.size - 1) * steps
         z, d, F, a = (np.empty(n) for _ in range(4))

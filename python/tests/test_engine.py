@@ -386,3 +386,11 @@ def test_contact_read_only_and_engine_not_copied():
     for cp in (copy.copy, copy.deepcopy):
         with pytest.raises(TypeError):
             cp(e)
+
+
+def test_default_extent_named_from_the_path():
+    """A table extent the engine chose from the run's path, refused, says
+    so (it named an a_max = 1e30 the caller never gave; helper-30, stop 57)."""
+    e = mdr.Engine(mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6))
+    with pytest.raises(mdr.Error, match="chosen from the run's path, whose largest value is 1e\\+300"):
+        e.run([0, 1e300], control="grips", steps_per_segment=3)
