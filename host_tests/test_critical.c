@@ -778,6 +778,37 @@ static void table_cone_stress_axis(void **st)
     assert_true(worst64 <= TOL_AXIS64 && worst32 <= TOL_AXIS32);
 }
 
+/* The flattened tip's stress at a = b (the contact on its flat, its grips
+ * pull-off state in the helper's case): g' = 0 on (0, b) and g(b) = 0, so
+ * 4.27 at equilibrium (d = -dl) is E* dl/(pi sqrt(b^2 - r^2)), finite; it
+ * was refused MDR_E_OVERFLOW, mdr_stress taking the whole mdr_eq, whose
+ * dd/da is infinite at the rim (a helper's attack, stop 57). r/b from 0 to
+ * 0.95, f64 and f32, within TOL_RIMSTRESS of that closed form. */
+#define TOL_RIMSTRESS 1e-6
+static void flattip_stress_at_rim(void **st)
+{
+    const double R = 1e-5, b = 2e-6, E = 1e6, w = 0.05, dl = sqrt(2 * M_PI * b * w / E);
+    const double pd[3] = {R, b, 0};
+    const float pf[3] = {(float)R, (float)b, 0};
+    mdr_contact_f64 c;
+    mdr_contact_f32 cf;
+    double worst = 0;
+    int k;
+    (void)st;
+    assert_int_equal(mdr_contact_init_f64(&c, MDR_PROFILE_FLATTIP, pd, E, w), MDR_OK);
+    assert_int_equal(mdr_contact_init_f32(&cf, MDR_PROFILE_FLATTIP, pf, (float)E, (float)w), MDR_OK);
+    for (k = 0; k <= 19; k++) {
+        const double r = b * 0.05 * k, want = E * dl / (M_PI * sqrt((b - r) * (b + r)));
+        double s;
+        float s32;
+        assert_int_equal(mdr_stress_f64(&c, b, r, &s), MDR_OK);
+        assert_int_equal(mdr_stress_f32(&cf, (float)b, (float)r, &s32), MDR_OK);
+        worst = fmax(worst, fmax(fabs(s - want), fabs((double)s32 - want)) / want);
+    }
+    print_message("flattened tip's stress at a = b: %.2e of the closed form (f64 and f32)\n", worst);
+    assert_true(worst <= TOL_RIMSTRESS);
+}
+
 static void table_critical_vs_profiles(void **st)
 {
     const double R = 1e-5, E = 1e6, w = 0.05, astar = cbrt(9 * M_PI * R * R * w / (8 * E));
@@ -966,6 +997,7 @@ int main(void)
         cmocka_unit_test(table_cone_fold_first_interval),
         cmocka_unit_test(table_worn_tip_stress),
         cmocka_unit_test(table_cone_stress_axis),
+        cmocka_unit_test(flattip_stress_at_rim),
         cmocka_unit_test(table_critical_vs_profiles),
         cmocka_unit_test(table_f32_height_offset),
         cmocka_unit_test(table_eq_and_stress),

@@ -206,8 +206,10 @@ mdr_status mdr_stress_intensity_f32(const mdr_contact_f32 *c, float a,
  * @param[in] c      from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
  * @param[in] a      contact radius [m], same domain as mdr_profile_eval()
  * @param[in] d      indentation depth [m] (any finite value)
- * @param[in] r      radial position, 0 <= r < a [m]; r > 0 for the cone and the
- *                   power law with n <= 1; r != b for the flattened tip
+ * @param[in] r      radial position, 0 <= r < a [m]; r > 0 for the cone, the
+ *                   power law with n <= 1 and a sampled tip whose f'(0+) is
+ *                   not 0 (a sampled cone); r != b for the flattened tip and
+ *                   r not at a kink of a sampled tip (MDR_E_SINGULAR)
  * @param[out] sigma sigma_zz(r) [Pa], compressive negative; untouched unless MDR_OK
  * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_RADIUS, MDR_E_POSITION,
  *         MDR_E_SINGULAR, MDR_E_OVERFLOW
@@ -215,8 +217,9 @@ mdr_status mdr_stress_intensity_f32(const mdr_contact_f32 *c, float a,
 mdr_status mdr_stress_at_f32(const mdr_contact_f32 *c, float a, float d,
                                   float r, float *sigma);
 
-/** @brief sigma_zz(r) in the equilibrium state of radius a (d = d(a)); see
- *         mdr_stress_at(). Same errors. */
+/** @brief sigma_zz(r) in the equilibrium state of radius a (d = g(a) - dl(a),
+ *         4.25; also at a flat's rim, a = b, where mdr_eq()'s dd/da is
+ *         infinite); see mdr_stress_at(). Same errors. */
 mdr_status mdr_stress_f32(const mdr_contact_f32 *c, float a, float r,
                                float *sigma);
 #endif /* MDR_CFG_STRESS */
