@@ -809,6 +809,61 @@ static void flattip_stress_at_rim(void **st)
     assert_true(worst <= TOL_RIMSTRESS);
 }
 
+/* A sampled cone has no jump (a helper's attack, stop 57): 2 000 samples of
+ * f = tan(0.3) r to 40 um, uniform and randomly spaced, the slopes
+ * differenced in double as the CLI does (each one rounds to eps r/h of
+ * itself: one ulp lower at node 78 of the uniform ones was taken for a
+ * concave kink, mdr_a_kink): mdr_critical under load and grips answers
+ * no jump, and the cone's a, d, F within TOL_CONE_SAMPLED. Before: 1 jump
+ * (uniform, grips), 37 and 39 (random, load and grips). Host only (O(m^2)
+ * per search). */
+#define TOL_CONE_SAMPLED 1e-12
+#ifndef MDR_TARGET_TEST
+static void table_cone_no_false_kinks(void **st)
+{
+    enum { M = 2000 };
+    static double r[M], f[M], sl[M - 1];
+    const double th = 0.3, E = 1e6, w = 0.05, pc[3] = {th, 0, 0};
+    uint64_t x = 0x2545F4914F6CDD1Dull;
+    mdr_contact_f64 cone, c;
+    int pass, i, ctl;
+    (void)st;
+    assert_int_equal(mdr_contact_init_f64(&cone, MDR_PROFILE_CONE, pc, E, w), MDR_OK);
+    for (pass = 0; pass < 2; pass++) {
+        for (i = 0; i < M; i++) {
+            double u;
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            u = (double)(x >> 11) / 9007199254740992.0;
+            r[i] = pass == 0 ? 40e-6 * i / (M - 1) : (i == 0 ? 0.0 : r[i - 1] + 40e-6 / (M - 1) * (0.2 + 1.6 * u));
+            f[i] = tan(th) * r[i];
+        }
+        for (i = 0; i + 1 < M; i++) {
+            sl[i] = (f[i + 1] - f[i]) / (r[i + 1] - r[i]);
+        }
+        assert_int_equal(mdr_contact_init_table_f64(&c, r, sl, M, E, w), MDR_OK);
+        for (ctl = 0; ctl < 2; ctl++) {
+            const uint8_t control = ctl ? MDR_CONTROL_GRIPS : MDR_CONTROL_LOAD;
+            mdr_critstate_f64 got, want;
+            double a0, a0c;
+            assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
+            assert_int_equal(mdr_default_start_f64(&cone, &a0c), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&c, control, 0, a0, &got), MDR_OK);
+            assert_int_equal(mdr_critical_f64(&cone, control, 0, a0c, &want), MDR_OK);
+            if (got.jumps != 0) {
+                print_message("sampled cone (%s spacing, %s): %u jumps\n", pass ? "random" : "uniform",
+                              ctl ? "grips" : "load", (unsigned)got.jumps);
+            }
+            assert_int_equal(got.jumps, 0);
+            assert_true(fabs(got.a - want.a) <= TOL_CONE_SAMPLED * want.a);
+            assert_true(fabs(got.d - want.d) <= TOL_CONE_SAMPLED * fabs(want.d));
+            assert_true(fabs(got.F - want.F) <= TOL_CONE_SAMPLED * fabs(want.F));
+        }
+    }
+}
+#endif
+
 static void table_critical_vs_profiles(void **st)
 {
     const double R = 1e-5, E = 1e6, w = 0.05, astar = cbrt(9 * M_PI * R * R * w / (8 * E));
@@ -998,6 +1053,9 @@ int main(void)
         cmocka_unit_test(table_worn_tip_stress),
         cmocka_unit_test(table_cone_stress_axis),
         cmocka_unit_test(flattip_stress_at_rim),
+#ifndef MDR_TARGET_TEST
+        cmocka_unit_test(table_cone_no_false_kinks),
+#endif
         cmocka_unit_test(table_critical_vs_profiles),
         cmocka_unit_test(table_f32_height_offset),
         cmocka_unit_test(table_eq_and_stress),
