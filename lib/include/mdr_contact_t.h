@@ -91,7 +91,8 @@ mdr_status MDR_SFX(mdr_contact_init)(MDR_SFX(mdr_contact) *c, uint8_t kind,
  * slope jumps (a kink: a worn flat's rim, the leading samples equal) the
  * curvature is taken from one side only, so the kink stays at that node
  * (a node is a kink where its slope change per unit length exceeds 4x both
- * neighbours'). g, g' and G = int g are then the exact Abel integrals of
+ * neighbours' and its slope jump the slopes' rounding, eps r/h of them).
+ * g, g' and G = int g are then the exact Abel integrals of
  * that f' (g' is +-inf just above a kink: MDR_E_OVERFLOW from
  * mdr_profile_eval() there when dg is asked for, like the flattened tip's
  * rim). Accuracy: order 2.5 in the sample spacing for a smooth f
