@@ -321,11 +321,11 @@ static void most_tensile_force(void **st)
  * (mdr_eq), from the library's start down; an unstable start first moves up
  * to where c regains its value; local minima refined by golden section;
  * the lowest, and the records before it. */
-static void brute(const mdr_contact_f64 *c, uint8_t ctl, double km, double as, double lam, double *amin,
-                  int *jumps)
+static void brute_n(const mdr_contact_f64 *c, uint8_t ctl, double km, double as, double lam, double per,
+                    double *amin, int *jumps)
 {
     mdr_eqstate_f64 e;
-    double best = INFINITY, v0, vprev = NAN, vpp = NAN, aprev = 0, ab = 0, h = lam / 64;
+    double best = INFINITY, v0, vprev = NAN, vpp = NAN, aprev = 0, ab = 0, h = lam / per;
     int nrec = 0;
 #define CTL(e) (ctl == MDR_CONTROL_LOAD ? (e).F : ctl == MDR_CONTROL_GRIPS ? (e).d : (e).d + (e).F / km)
     assert_int_equal(mdr_eq_f64(c, as, &e), MDR_OK);
@@ -381,6 +381,58 @@ static void brute(const mdr_contact_f64 *c, uint8_t ctl, double km, double as, d
     *amin = ab;
     *jumps = nrec - 1;
 }
+
+static void brute(const mdr_contact_f64 *c, uint8_t ctl, double km, double as, double lam, double *amin,
+                  int *jumps)
+{
+    brute_n(c, ctl, km, as, lam, 64, amin, jumps);
+}
+
+/* Folds just below the start and narrow ones (a helper's attack, stop 57,
+ * whose reference evaluated g at 30 digits): a wavy profile whose default
+ * start (5.709 lambda) lies 0.05 lambda above a fold was answered with 4
+ * jumps for 5, and a start 0.001 to 0.003 lambda above a fold missed that
+ * fold (the cell below the start was never searched for a hidden pair); a
+ * load case with a fold 0.03 lambda wide at 51.6 lambda answered 2 jumps
+ * for 3 from some starts (one golden section over two cells lost it beside
+ * a maximum). Each count against brute_n() at 4 096 points a wavelength
+ * and the helper's (host only: about 10^6 evaluations): grips, starts
+ * default, 3.03e-8, 3.05e-8 m: 5, 4, 4; load, starts default, 52 and 53
+ * lambda: 3, 3, 3. */
+#ifndef MDR_TARGET_TEST
+static void wavy_jumps_near_start(void **st)
+{
+    const double lam1 = 6.43209610233014e-09, lam2 = 3.432944270195321e-08;
+    const mdr_contact_f64 c1 = mk64(MDR_PROFILE_WAVY, 4.61569549380821e-06, 2.0927219124069958e-12, lam1,
+                                    1527210490.4172254, 2.0924068235626915e-05);
+    const mdr_contact_f64 c2 = mk64(MDR_PROFILE_WAVY, 4.915124374473876e-07, 1.530973428112789e-10, lam2,
+                                    72792866.0002434, 395.00362604610575);
+    const struct {
+        const mdr_contact_f64 *c;
+        uint8_t ctl;
+        double lam, as;
+        int want;
+    } cs[] = {{&c1, MDR_CONTROL_GRIPS, lam1, 0, 5},        {&c1, MDR_CONTROL_GRIPS, lam1, 3.03e-8, 4},
+              {&c1, MDR_CONTROL_GRIPS, lam1, 3.05e-8, 4},  {&c2, MDR_CONTROL_LOAD, lam2, 0, 3},
+              {&c2, MDR_CONTROL_LOAD, lam2, 52 * lam2, 3}, {&c2, MDR_CONTROL_LOAD, lam2, 53 * lam2, 3}};
+    (void)st;
+    for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+        mdr_critstate_f64 o;
+        double as = cs[i].as, ab;
+        int jb;
+        if (as == 0) {
+            assert_int_equal(mdr_default_start_f64(cs[i].c, &as), MDR_OK);
+        }
+        assert_int_equal(mdr_critical_f64(cs[i].c, cs[i].ctl, 0, as, &o), MDR_OK);
+        brute_n(cs[i].c, cs[i].ctl, 1.0, as, cs[i].lam, 4096, &ab, &jb);
+        print_message("wavy near its start (%s, start %.4f lambda): %u jumps (brute %d, the helper's %d)\n",
+                      cs[i].ctl == MDR_CONTROL_LOAD ? "load" : "grips", as / cs[i].lam, o.jumps, jb, cs[i].want);
+        assert_int_equal(o.jumps, cs[i].want);
+        assert_int_equal(jb, cs[i].want);
+        rel_le(o.a, ab, 0, WAVY, "wavy near its start: critical radius vs brute force");
+    }
+}
+#endif
 
 /* R = 2 mm, lambda = 0.5 um: ~650 wavelengths inside the default start,
  * folds in every one of them (h = 1 and 5 nm); the search completes (it hit
@@ -1046,6 +1098,9 @@ int main(void)
         cmocka_unit_test(default_start_is_stable),
         cmocka_unit_test(most_tensile_force),
         cmocka_unit_test(wavy_gripper_scale),
+#ifndef MDR_TARGET_TEST
+        cmocka_unit_test(wavy_jumps_near_start),
+#endif
         cmocka_unit_test(table_exact_for_quadratics),
         cmocka_unit_test(table_order),
         cmocka_unit_test(table_worn_tip_kendall),
