@@ -211,7 +211,10 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   force scale; or the retract's adhesive end, its contact samples at or
  *   below the baseline, not met within its noise by the model's square-root
  *   approach to the fold: a pull-off that is no fold, as the end of an
- *   approach passed in reversed time order; either method: the approach
+ *   approach passed in reversed time order; either method: the retract's
+ *   free part next to the pull-off off its line (the sum of its first m
+ *   residuals beyond MDR_FIT_NOISE_SIGMAS noise widths times sqrt(m),
+ *   m = 1, 2, 4, ...: a long-range attraction after the jump); the approach
  *   leaving the baseline a sampling step or more below the retract's last
  *   contact sample, where the model holds it free: drift, a glitch,
  *   correlated noise, or a curve reversed; opts->approach: the approach's

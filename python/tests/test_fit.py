@@ -384,3 +384,72 @@ def test_wadv_at_its_bound(arith):
     print("w_adv at its bound (%s): %d of 30 draws, worst pull %.2f" % (arith, at_bound, worst))
     assert at_bound >= 1
 
+
+
+def _vdw_curve(f, D0, seed, n=1000, noise=0.001):
+    """jkr_curves' curve (20 nm tip, E* 1 GPa, w 0.05, 0.2 N/m, no
+    hysteresis) with a van der Waals-like attraction after the pull-off:
+    the free retract less f |F_po| (D0/(D + D0))^2, D the base's travel
+    past the lever's fold"""
+    R, E, w, k = 20e-9, 1e9, 0.05, 0.2
+    z, F, Fc = jkr_curves.curve(R, E, w, w, k, n, 3.0, 1.0, noise, seed=seed)
+    zr = z[n:] - 2e-6
+    zc = float(jkr_curves._zp(jkr_curves._fold(R, E, w, k), R, E, w, k))
+    free = zr < zc
+    F[n:][free] -= f * abs(Fc) * (D0 / (zc - zr[free] + D0)) ** 2
+    return z, F, R, E, k
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_long_range_tail(arith):
+    """A long-range tail after the pull-off (helper-28, stop 57) is a curve
+    the model (JKR without long-range forces) does not describe: before
+    stop 58 f = 2 % to 10 % of the pull-off force, D0 = 1 to 3 nm, noise
+    0.1 %, gave E* 1.01 to 1.15 times the truth, 2 to 10 errors off,
+    status ok. Every such curve is refused, MDR_E_MISFIT; weaker tails
+    (f = 0.5 %, 1 %) are refused or answered within PULL errors; the
+    same curves without the tail are answered within PULL."""
+    refused = answered = 0
+    worst = 0.0
+    for f in (0.0, 0.005, 0.01, 0.02, 0.05, 0.1):
+        for D0 in (1e-9, 2e-9, 3e-9):
+            for seed in range(4):
+                z, F, R, E, k = _vdw_curve(f, D0, seed)
+                try:
+                    res = mdr.fit(z, F, "paraboloid", R=R, k_machine=k, unpinned=True, arith=arith)
+                except mdr.Error as e:
+                    assert f > 0 and e.status == "MDR_E_MISFIT", (f, D0, seed, e)
+                    assert f >= 0.005, (f, D0, seed)
+                    refused += 1
+                    continue
+                assert f < 0.02, (f, D0, seed, res.E / E)
+                pull = abs(res.E - E) / res.E_err
+                assert pull <= PULL, (f, D0, seed, pull)
+                answered += f > 0
+                worst = max(worst, pull) if f > 0 else worst
+    print("long-range tail (%s): of 60 tailed curves %d refused, %d answered (f <= 1 %%), worst %.2f errors"
+          % (arith, refused, answered, worst))
+
+
+def test_clean_curves_not_refused_as_tails():
+    """The free part's window test (mdr_f_tail_held) on clean curves over a
+    wide range (R 5 nm to 1 um, E* 1 MPa to 10 GPa, w 0.01 to 0.3, levers
+    0.03 to 30 N/m, 30 to 3 000 samples a branch, noise 0.01 % to 3 %,
+    flat or tilted, with and without hysteresis): no MDR_E_MISFIT among
+    200 random draws (a false refusal would be one)."""
+    rng = np.random.default_rng(1)
+    status = {}
+    for i in range(200):
+        R, E, w = 10 ** rng.uniform(-8.3, -6), 10 ** rng.uniform(6, 10), 10 ** rng.uniform(-2, -0.5)
+        k, n, noise = 10 ** rng.uniform(-1.5, 1.5), int(10 ** rng.uniform(1.5, 3.5)), 10 ** rng.uniform(-4, -1.5)
+        w_adv = w * rng.choice([1.0, 1.0, 0.5])
+        z, F, _ = jkr_curves.curve(R, E, w, w_adv, k, n, rng.uniform(1, 4), rng.uniform(0.2, 2), noise,
+                                   Fb=0.1, tilt=rng.choice([0, 0.02]), seed=i)
+        try:
+            mdr.fit(z, F, "paraboloid", R=R, k_machine=k, unpinned=bool(w_adv == w))
+            st = "ok"
+        except mdr.Error as e:
+            st = e.status
+        status[st] = status.get(st, 0) + 1
+    print("clean random curves:", sorted(status.items()))
+    assert "MDR_E_MISFIT" not in status, status
