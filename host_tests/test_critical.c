@@ -125,6 +125,45 @@ static void sphere_near_R(void **st)
     }
 }
 
+/* A pull-off below the arithmetic's normal range is a named status, never
+ * a number short of its digits (helper-33, stop 58): the power law n = 0.52,
+ * C = 0.8276877377646706, E* = 1 kPa, w = 10 pulls off at a = 1.39e-33 m
+ * with F = -1.75e-47 N; f32 returned F = -0.0 (underflowed), MDR_OK.
+ * Grips, the closed form worked out here: d(a) = kappa C a^n - c sqrt(a)
+ * (c = sqrt(2 pi w/E*), kappa = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2))
+ * has its fold at a^(n - 1/2) = c/(2 n kappa C), where F = 2E* (a d - G),
+ * G = kappa C a^(n+1)/(n+1). f64 holds it: REL64 (the conditioning near
+ * n = 1/2 aside, 1/(n - 1/2) = 50: REL64 x 50). */
+static void pull_off_below_range(void **st)
+{
+    const double n = 0.52, C = 0.8276877377646706, E = 1e3, w = 10.0;
+    const double c = sqrt(2.0 * M_PI * w / E), kap = sqrt(M_PI) * tgamma(0.5 * n + 1.0) / tgamma(0.5 * n + 0.5);
+    const double a = pow(c / (2.0 * n * kap * C), 1.0 / (n - 0.5)), d = kap * C * pow(a, n) - c * sqrt(a);
+    const double F = 2.0 * E * (a * d - kap * C * pow(a, n + 1.0) / (n + 1.0));
+    static const uint8_t ctl[2] = {MDR_CONTROL_GRIPS, MDR_CONTROL_MACHINE};
+    mdr_contact_f32 c32 = mk32(MDR_PROFILE_POWERLAW, C, n, 0, E, w);
+    mdr_contact_f64 c64 = mk64(MDR_PROFILE_POWERLAW, C, n, 0, E, w);
+    mdr_critstate_f32 of;
+    mdr_critstate_f64 o;
+    float a0f;
+    double a0;
+    int k;
+    (void)st;
+    assert_int_equal(mdr_default_start_f64(&c64, &a0), MDR_OK);
+    assert_int_equal(mdr_critical_f64(&c64, MDR_CONTROL_GRIPS, 0, a0, &o), MDR_OK);
+    rel_le(o.a, a, 0, 50 * REL64, "power law n = 0.52 pull-off radius at 1.4e-33 m (f64)");
+    rel_le(o.F, F, 0, 50 * REL64, "power law n = 0.52 pull-off force -1.7e-47 N (f64)");
+    assert_true(F < 0.0 && fabs(F) < 1.4e-45 && a < 1e-30);
+    for (k = 0; k < 2; k++) {
+        if (mdr_default_start_f32(&c32, &a0f) != MDR_OK) {
+            a0f = (float)a0;
+        }
+        memset(&of, GUARD, sizeof of);
+        assert_int_equal(mdr_critical_f32(&c32, ctl[k], 2e-6f, a0f, &of), MDR_E_OVERFLOW);
+        assert_true(untouched(&of, sizeof of));
+    }
+}
+
 /* The facts the flattened tip's structure rests on (mdr_critical.inc), in
  * closed form: s = sqrt(a) g'(a) has its single minimum on (b, inf) at
  * y_m^2 = (9 + sqrt 57)/12; above it sigma = d ln s/d ln a rises from 0 to
@@ -1115,6 +1154,7 @@ int main(void)
         cmocka_unit_test(table_f32_height_offset),
         cmocka_unit_test(table_eq_and_stress),
         cmocka_unit_test(table_errors),
+        cmocka_unit_test(pull_off_below_range),
     };
     return cmocka_run_group_tests_name("critical", tests, NULL, NULL);
 }
