@@ -2301,6 +2301,33 @@ static void engine_errors(void **st)
         assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)JE, (float)JW, 0, 1e-38f), MDR_E_CONTROL);
         assert_int_equal(mdr_engine_init_f32(&e32, &t32, 1e-30f, 0, 0, 1e-39f), MDR_E_CONTROL);
         assert_memory_equal(&e32, &k32, sizeof e32);
+        {
+            static const float mf[][4] = {{1e-38f, 3e38f, 0, 0},     {1e-38f, 3e38f, 3e38f, 0}, {(float)JE, (float)JW, 0, 1e-38f},
+                                          {1e-30f, 0, 0, 1e-39f},    {(float)JE, (float)JW, 0, 0}, {(float)JE, -1.0f, 0, 0},
+                                          {(float)JE, (float)JW, 0.2f, 0}, {(float)JE, (float)JW, 0, 0.2f}};
+            size_t i;
+            for (i = 0; i < sizeof mf / sizeof mf[0]; i++) {
+                const mdr_status st = mdr_engine_check_f32(mf[i][0], mf[i][1], mf[i][2], mf[i][3]);
+                assert_int_equal(st, mdr_engine_init_f32(&e32, &t32, mf[i][0], mf[i][1], mf[i][2], mf[i][3]));
+                assert_true(i == 4 || i == 7 ? st == MDR_OK : st != MDR_OK);
+            }
+        }
+    }
+    /* mdr_engine_check: the init's material and machine checks alone, the
+     * same status for each (the Python package refuses an Engine's
+     * settings with it where they are given) */
+    {
+        static const double mat[][4] = {{JE, JW, 0, 0},        {NAN, JW, 0, 0},      {JE, INFINITY, 0, 0},
+                                        {-JE, JW, 0, 0},       {JE, -JW, 0, 0},      {JE, JW, 2 * JW, 0},
+                                        {JE, JW, -JW, 0},      {JE, JW, 0, -1.0},    {JE, JW, 0, INFINITY},
+                                        {JE, JW, 0, 1e-305},   {1e-300, 0, 0, 1e-310}, {1e-300, 1e300, 0, 0},
+                                        {1e-300, 1e300, 1e300, 0}, {JE, JW, JW, 0.2}};
+        size_t i;
+        for (i = 0; i < sizeof mat / sizeof mat[0]; i++) {
+            const mdr_status st = mdr_engine_check_f64(mat[i][0], mat[i][1], mat[i][2], mat[i][3]);
+            assert_int_equal(st, mdr_engine_init_f64(&e, &t64, mat[i][0], mat[i][1], mat[i][2], mat[i][3]));
+            assert_true(i == 0 || i == 13 ? st == MDR_OK : st != MDR_OK);
+        }
     }
     bad = t64;
     bad.n = MDR_SPRINGS_MAX + 1;

@@ -277,6 +277,19 @@ mdr_status mdr_engine_init_f64(mdr_engine_f64 *e, const mdr_table_f64 *tab,
                                     double E, double w, double w_adv, double k_m);
 
 /**
+ * @brief The material and machine checks of mdr_engine_init() (and of the
+ *        q31 engine's init from this arithmetic) alone, before a table is
+ *        built: a front end refuses bad settings where they are given.
+ * @param E, w, w_adv, k_m  as mdr_engine_init()
+ * @return MDR_OK, MDR_E_NONFINITE, MDR_E_PARAM (E* not > 0, w < 0, w_adv
+ *         < 0 or above w, or w/E* beyond the arithmetic), MDR_E_CONTROL (k_m < 0, or (2 E*) / k_m or
+ *         1/k_m not finite in the arithmetic): the status mdr_engine_init()
+ *         returns for these on a valid table (a pull-off the table does not
+ *         resolve is the init's to find)
+ */
+mdr_status mdr_engine_check_f64(double E, double w, double w_adv, double k_m);
+
+/**
  * @brief One control tick with the indentation d held (fixed grips).
  * @param[in,out] e  the engine; unchanged unless MDR_OK (but for its sticky flags)
  * @param[in]  d    indentation [m], finite (negative: a gap)

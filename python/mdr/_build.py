@@ -145,6 +145,7 @@ mdr_status mdr_contact_init_{S}(mdr_contact_{S} *c, uint8_t kind, const {T} p[3]
 mdr_status mdr_critical_{S}(const mdr_contact_{S} *c, uint8_t control, {T} k_m, {T} a_start,
                             mdr_critstate_{S} *out);
 mdr_status mdr_default_start_{S}(const mdr_contact_{S} *c, {T} *a_start);
+mdr_status mdr_engine_check_{S}({T} E, {T} w, {T} w_adv, {T} k_m);
 mdr_status mdrpy_eq_{S}(const mdr_contact_{S} *c, size_t n, const double *a, double *out,
                         uint8_t *flags, size_t *fail);
 mdr_status mdrpy_state_{S}(const mdr_contact_{S} *c, size_t n, const double *a, const double *d,

@@ -132,6 +132,13 @@ class Engine:
         # 1 N/m, E=True as 1 Pa; helper-30, stop 57)
         self.E, self.w, self.w_adv, self.k_machine = narrow(arith, "Engine", E=E, w=w, w_adv=w_adv,
                                                             k_machine=k_machine)
+        # the engine init's material and machine checks, here where they are
+        # given, not at the first run's table (helper-30, stop 57); q31's
+        # init checks them in double
+        check(getattr(lib, "mdr_engine_check_f32" if arith == "f32" else "mdr_engine_check_f64")(
+            self.E, self.w, self.w_adv, self.k_machine),
+            "Engine(E=%.9g, w=%.9g, w_adv=%.9g, k_machine=%.9g, arith=%r)" % (
+                self.E, self.w, self.w_adv, self.k_machine, arith))
         self.springs = int(springs)
         self.arith = arith
         self._arith = ARITHS[arith]

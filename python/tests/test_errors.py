@@ -173,6 +173,18 @@ def test_engine_refusals():
     for n, ar in ((1, "f64"), (0, "f32"), (1000, "q31")):
         e = refused("MDR_E_SIZE", mdr.Engine, c, springs=n, arith=ar)
         assert "(2 ... 16384; q31: a power of two)" in str(e), str(e)
+    # the material and machine settings are refused at once too, without a_max (the table waits for
+    # the first run; helper-30, stop 57: refused only there), in every arithmetic
+    for ar in ("f32", "f64", "q31"):
+        refused("MDR_E_PARAM", mdr.Engine, c, w_adv=0.1, arith=ar)
+        refused("MDR_E_PARAM", mdr.Engine, c, w_adv=-0.01, arith=ar)
+        refused("MDR_E_CONTROL", mdr.Engine, c, k_machine=-1.0, arith=ar)
+        refused("MDR_E_NONFINITE", mdr.Engine, c, w_adv=math.inf, arith=ar)
+        refused("MDR_E_PARAM", mdr.Engine.from_tip, [0, 1e-6, 2e-6], [0, 1e-7, 4e-7], E=1e6, w=0.05, w_adv=0.1,
+                arith=ar)
+    # a lever so soft that float rounds its stiffness to 0 would be no lever at all (stop 58)
+    refused("MDR_E_OVERFLOW", mdr.Engine, c, k_machine=1e-300, arith="f32")
+    refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=10e-6, E=1e6, w=1e-300, arith="f32")
     with pytest.raises(TypeError, match="R must be a number"):
         mdr.Contact("paraboloid", R="10e-6", E=1e6, w=0.05)
     with pytest.raises(TypeError, match="w must be a number"):
