@@ -1548,6 +1548,37 @@ static void scene_q31_pull_at_range_end(void **state)
 }
 
 /* bad input: named errors, the scene unchanged; saturation flagged */
+/* A scene no init filled (zeroed: a static instance after a refused init,
+ * its status ignored) is refused in contact, MDR_E_NULL, in every
+ * arithmetic, and left as it was; helper-32, stop 58: a firmware built
+ * without MDR_CFG_EVENTS kept its MDR_OUT_ALL init (MDR_E_DISABLED) and the
+ * f32 scene then answered F = 0 at every depth, MDR_OK. (A control at or
+ * below 0 is a separated tick, answered as such.) */
+static void scene_zeroed(void **state)
+{
+    static const mdr_scene_f32 z32;
+    static const mdr_scene_f64 z64;
+    static const mdr_scene_q31 zq;
+    mdr_scene_f32 s32 = z32;
+    mdr_scene_f64 s64 = z64;
+    mdr_scene_q31 q = zq;
+    mdr_step_f32 o32;
+    mdr_step_f64 o64;
+    mdr_step_q31 oq;
+    (void)state;
+    assert_int_equal(mdr_scene_step_d_f32(&s32, 2e-9f, &o32), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_F_f32(&s32, 1e-9f, &o32), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_d_f64(&s64, 2e-9, &o64), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_F_f64(&s64, 1e-9, &o64), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_d_q31(&q, 1 << 20, &oq), MDR_E_NULL);
+    assert_int_equal(mdr_scene_step_F_q31(&q, 1 << 20, &oq), MDR_E_NULL);
+    assert_memory_equal(&s32, &z32, sizeof s32);
+    assert_memory_equal(&s64, &z64, sizeof s64);
+    assert_memory_equal(&q, &zq, sizeof q);
+    assert_int_equal(mdr_scene_step_d_f32(&s32, -2e-9f, &o32), MDR_OK);
+    assert_true(o32.F == 0.0f);
+}
+
 static void scene_q31_errors(void **state)
 {
     mdr_scene_f64 s;
@@ -1680,6 +1711,7 @@ int main(void)
         cmocka_unit_test(scene_q31_adhesion_range),
         cmocka_unit_test(scene_q31_pull_at_range_end),
         cmocka_unit_test(scene_q31_errors),
+        cmocka_unit_test(scene_zeroed),
 #endif
     };
     printf("sizeof mdr_scene_f32 %u B, mdr_scene_f64 %u B\n", (unsigned)sizeof(mdr_scene_f32),
