@@ -30,7 +30,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_DEGENERATE: return "the data do not determine the parameters";
     case MDR_E_JUMPS: return "the retract jumps before the pull-off (one-branch model does not apply)";
     case MDR_E_PINNED: return "the retract is straight to its pull-off: pinned to its rupture, or a pinned top its noise may hide (fit with the approach, or state unpinned)";
-    case MDR_E_MISFIT: return "the fitted model does not reproduce the curve (residuals beyond its noise, overall, at the pull-off or in the free part next to it: a long-range tail): a poor first guess, units not SI, or a curve the model does not describe (a pull-off that is no fold: an approach read backwards)";
+    case MDR_E_MISFIT: return "the fitted model does not reproduce the curve (residuals beyond its noise, overall, at the pull-off or in the free part next to it: a long-range tail, or a force lagging the jump, a detector filter or ringing): a poor first guess, units not SI, or a curve the model does not describe (a pull-off that is no fold: an approach read backwards)";
     default: return "unknown status";
     }
 }

@@ -453,3 +453,35 @@ def test_clean_curves_not_refused_as_tails():
         status[st] = status.get(st, 0) + 1
     print("clean random curves:", sorted(status.items()))
     assert "MDR_E_MISFIT" not in status, status
+
+
+def test_detector_lag_refused_then_trimmed():
+    """A curve whose force went through a first-order detector filter (an RC
+    of half a sample) lags the pull-off jump: its first free samples lie far
+    below the baseline, a transient the model does not hold. The fit refuses
+    it, MDR_E_MISFIT (the free part next to the jump off its line; helper-34,
+    stop 58: before the check these curves were answered with E* biased by
+    about +1.3 of its errors); with the first 2 free samples dropped, as
+    docs/fitting.md advises, every curve is answered within PULL errors."""
+    R, E, w, k, n = 20e-9, 1e9, 0.05, 0.2, 1000
+    a = math.exp(-2.0)  # tau = 0.5 sample
+    worst = 0.0
+    for seed in range(8):
+        z, F, _ = jkr_curves.curve(R, E, w, w, k, n, 4.0, 1.0, 0.003, Fb=0.1, tilt=0.02, seed=seed)
+        y = np.empty_like(F)
+        acc = F[0]
+        for i, v in enumerate(F):  # y_i = a y_(i-1) + (1 - a) F_i
+            acc = a * acc + (1 - a) * v
+            y[i] = acc
+        with pytest.raises(mdr.Error) as e:
+            mdr.fit(z, y, "paraboloid", R=R, k_machine=k, unpinned=True)
+        assert e.value.status == "MDR_E_MISFIT", (seed, e.value)
+        j = n + int(np.argmax(np.diff(y[n:])))  # the last contact sample
+        keep = np.ones(z.size, bool)
+        keep[j + 1:j + 3] = False
+        res = mdr.fit(z[keep], y[keep], "paraboloid", R=R, k_machine=k, unpinned=True)
+        pull = abs(res.E - E) / res.E_err
+        assert pull <= PULL, (seed, pull)
+        worst = max(worst, pull, abs(res.w - w) / res.w_err)
+    print("detector lag (tau 0.5 sample): 8 of 8 refused, answered with 2 samples dropped, worst %.2f errors"
+          % worst)
