@@ -164,6 +164,38 @@ static void pull_off_below_range(void **st)
     }
 }
 
+/* A contact no init filled (zeroed: a static one whose init was refused,
+ * its status ignored) is refused, MDR_E_KIND, by the critical search and
+ * the table builder, in both arithmetics, their outputs untouched;
+ * helper-32, stop 58: mdr_critical answered a = d = F = 0 and
+ * mdr_table_init_profile built an all-zero table, MDR_OK. */
+static void zeroed_contact(void **st)
+{
+    static const mdr_contact_f32 z32;
+    static const mdr_contact_f64 z64;
+    mdr_critstate_f32 of;
+    mdr_critstate_f64 o;
+    (void)st;
+    memset(&of, GUARD, sizeof of);
+    memset(&o, GUARD, sizeof o);
+    assert_int_equal(mdr_critical_f32(&z32, MDR_CONTROL_GRIPS, 0, 1e-6f, &of), MDR_E_KIND);
+    assert_int_equal(mdr_critical_f64(&z64, MDR_CONTROL_LOAD, 0, 1e-6, &o), MDR_E_KIND);
+    assert_true(untouched(&of, sizeof of) && untouched(&o, sizeof o));
+#if MDR_CFG_ENGINE
+    {
+        static mdr_node_f32 n32[MDR_TABLE_NODES(16)];
+        static mdr_node_f64 n64[MDR_TABLE_NODES(16)];
+        mdr_table_f32 t32;
+        mdr_table_f64 t64;
+        memset(&t32, GUARD, sizeof t32);
+        memset(&t64, GUARD, sizeof t64);
+        assert_int_equal(mdr_table_init_profile_f32(&t32, n32, 16, &z32, 1e-6f), MDR_E_KIND);
+        assert_int_equal(mdr_table_init_profile_f64(&t64, n64, 16, &z64, 1e-6), MDR_E_KIND);
+        assert_true(untouched(&t32, sizeof t32) && untouched(&t64, sizeof t64));
+    }
+#endif
+}
+
 /* The facts the flattened tip's structure rests on (mdr_critical.inc), in
  * closed form: s = sqrt(a) g'(a) has its single minimum on (b, inf) at
  * y_m^2 = (9 + sqrt 57)/12; above it sigma = d ln s/d ln a rises from 0 to
@@ -1155,6 +1187,7 @@ int main(void)
         cmocka_unit_test(table_eq_and_stress),
         cmocka_unit_test(table_errors),
         cmocka_unit_test(pull_off_below_range),
+        cmocka_unit_test(zeroed_contact),
     };
     return cmocka_run_group_tests_name("critical", tests, NULL, NULL);
 }

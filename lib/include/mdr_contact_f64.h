@@ -267,7 +267,8 @@ mdr_status mdr_stress_f64(const mdr_contact_f64 *c, double a, double r,
  * @param[in]  a_start  starting radius [m] in the profile's domain (see
  *                      mdr_default_start())
  * @param[out] out      filled only on MDR_OK
- * @return MDR_OK, MDR_E_NULL, MDR_E_NONFINITE, MDR_E_CONTROL, MDR_E_RADIUS
+ * @return MDR_OK, MDR_E_NULL, MDR_E_KIND (a contact no init filled),
+ *         MDR_E_NONFINITE, MDR_E_CONTROL, MDR_E_RADIUS
  *         (a_start outside the domain; no stable state at or above it: a
  *         power law with n < 1/2 beyond its fold, a table that ends on an
  *         unstable branch; the sphere's critical radius within rounding of

@@ -3,9 +3,11 @@
  * mdr_each_arith.h: includes the contract template named by MDR_TEMPLATE
  * once per floating arithmetic the build has (mdr_options.h), with
  * MDR_T = float, MDR_SFX(name) = name##_f32, then MDR_T = double,
- * MDR_SFX(name) = name##_f64. Used by mdr_contact.h, mdr_engine.h and
- * mdr_scene.h:
- *     #define MDR_TEMPLATE "mdr_scene_t.h"
+ * MDR_SFX(name) = name##_f64. The public headers include the generated
+ * per-arithmetic ones (mdr_scene_f32.h, ..., written out by
+ * mk/gen_headers.py); this file serves code written once for both
+ * arithmetics outside lib/ (the Python package's python/src):
+ *     #define MDR_TEMPLATE "mdr_py_t.h"
  *     #include "mdr_each_arith.h"
  * No include guard: it is meant to be included once per template.
  */

@@ -189,7 +189,8 @@ typedef struct {
  *                   ends first, rounded up: short of x_max by less than
  *                   one part in k). tab->h n is the extent made; rims in
  *                   spring 0 (b < x_max/n) stay where they are.
- * @return MDR_OK, MDR_E_NULL, MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
+ * @return MDR_OK, MDR_E_NULL, MDR_E_KIND (a contact no init filled),
+ *         MDR_E_SIZE, MDR_E_NONFINITE, MDR_E_RADIUS,
  *         MDR_E_OVERFLOW (x_max too large for the arithmetic, or so small
  *         that the table's values lose their digits, every table: a
  *         curvature term that matters, q ~ h |Dg_{i+1} - Dg_i|/12, below
@@ -254,7 +255,13 @@ mdr_status mdr_table_init_g_f64(mdr_table_f64 *tab, mdr_node_f64 *node,
  * @brief Start an engine on a table, separated (a = 0, d = 0, F = 0).
  * @param[out] e     the engine; untouched unless MDR_OK
  * @param[in] tab    a table from mdr_table_init_*() or a generated const
- *                   table; must outlive the engine
+ *                   table; must outlive the engine and stay as it was: the
+ *                   engine keeps what init found on it (the pull-off's and
+ *                   the landings' springs, the fold's control); a table
+ *                   rebuilt in place (another tip in the same storage) needs
+ *                   the engine initialised again (else a 40 um tip written
+ *                   over a 10 um one pulled off at 0.29 of its force,
+ *                   MDR_OK: helper-32, stop 58)
  * @param[in] E      E* > 0 [Pa]
  * @param[in] w      work of adhesion on retraction, w >= 0 [J/m^2]
  * @param[in] w_adv  work of adhesion on approach, 0 <= w_adv <= w [J/m^2]

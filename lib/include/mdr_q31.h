@@ -226,7 +226,9 @@ mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
  *        (README "Fixed point", error budget).
  * @param[out] e    the engine; untouched unless MDR_OK
  * @param[in] tab   a q31 table (mdr_table_q31_from_f32/_f64 or generated);
- *                  must outlive the engine
+ *                  must outlive the engine and stay as it was (a table
+ *                  rebuilt in place needs the engine initialised again, as
+ *                  mdr_engine_init_f32())
  * @param[in] E, w, w_adv  as mdr_engine_init_f32()
  * @param[in] k_m  machine stiffness [N/m], 0 for none; with a machine
  *                 kappa = 2 E* L / k_m must be <= 2^16 (the relative error

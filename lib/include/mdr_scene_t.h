@@ -33,7 +33,10 @@
 /** A table-free scene. Caller-owned; fill it with an mdr_scene_init_*()
  *  function only, then read it freely and change it only through the step
  *  functions. Its energy bookkeeping is the mdr_energy_<type> of
- *  mdr_engine_t.h, caller-owned and optional. */
+ *  mdr_engine_t.h, caller-owned and optional, held by pointer: a struct
+ *  copy of a scene shares it with the original (both count their cycles
+ *  into it), so give a copy that steps on its own an init of its own (or
+ *  none); the spring engine embeds its energy and copies it. */
 typedef struct {
     MDR_T Ds;      /**< depth unit D_s = C a_s^n [m] */
     MDR_T Fs;      /**< force unit 2 E* a_s D_s [N] */
