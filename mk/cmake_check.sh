@@ -37,6 +37,24 @@ case $(PKG_CONFIG_PATH="$pcdir" pkg-config --variable=libdir mdr) in
 esac
 step "build (pkg-config, --prefix)" cc -std=c99 -Wall -Wextra -Werror examples/cmake-consumer/main.c $flags -o "$dir/moved/consumer"
 echo "cmake-check host, cmake --install --prefix elsewhere, pkg-config '$flags': $("$dir/moved/consumer")"
+# a reduced build's options reach its pkg-config consumers (mdr.pc's
+# Cflags; before stop 58 they saw every option on, mdr_options.h's default,
+# and a call guarded by #if MDR_CFG_STRESS failed to link: helper-32)
+step "configure libmdr (MDR_CFG_STRESS=OFF)" cmake -S . -B "$dir/red" -DCMAKE_INSTALL_PREFIX="$dir/red-prefix" \
+    -DBUILD_SHARED_LIBS=OFF -DMDR_CFG_STRESS=OFF
+step "build libmdr (reduced)" cmake --build "$dir/red" -j2
+step "install libmdr (reduced)" cmake --install "$dir/red"
+pcdir=$(dirname "$(find "$dir/red-prefix" -name mdr.pc)")
+step "pkg-config (reduced)" env PKG_CONFIG_PATH="$pcdir" pkg-config --cflags --libs mdr
+flags=$(cat "$log")
+case "$flags" in
+*-DMDR_CFG_STRESS=0*) ;;
+*) echo "cmake-check: a build with MDR_CFG_STRESS=OFF installed an mdr.pc without it: $flags"; exit 1;;
+esac
+printf '#include "mdr.h"\nint main(void) { return MDR_CFG_STRESS; }\n' > "$dir/red/opt.c"
+step "build (pkg-config, reduced)" cc -std=c99 -Wall -Wextra -Werror "$dir/red/opt.c" $flags -o "$dir/red/opt"
+"$dir/red/opt" || { echo "cmake-check: MDR_CFG_STRESS is on in a pkg-config consumer of a build without it"; exit 1; }
+echo "cmake-check host, MDR_CFG_STRESS=OFF installed, pkg-config '$flags': the option off in the consumer"
 
 step "configure (Cortex-M4F)" cmake -S examples/cmake-consumer -B "$dir/m4f" -DMDR_SOURCE_DIR="$src" \
     -DCMAKE_TOOLCHAIN_FILE="$src/cmake/arm-none-eabi.cmake" -DCMAKE_BUILD_TYPE=MinSizeRel

@@ -35,7 +35,7 @@ install: $(B)/host/libmdr.a $(B)/host/libmdr.so
 	install -m 755 $(B)/host/libmdr.so $(DESTDIR)$(PREFIX)/lib/libmdr.so.$(MDR_VERSION)
 	ln -sf libmdr.so.$(MDR_VERSION) $(DESTDIR)$(PREFIX)/lib/libmdr.so.$(MDR_SOVERSION)
 	ln -sf libmdr.so.$(MDR_SOVERSION) $(DESTDIR)$(PREFIX)/lib/libmdr.so
-	sed -e 's|@MDR_PC_PREFIX@|$(PREFIX)|; s|@MDR_PC_LIBDIR@|$${exec_prefix}/lib|; s|@PROJECT_VERSION@|$(MDR_VERSION)|' \
+	sed -e 's|@MDR_PC_PREFIX@|$(PREFIX)|; s|@MDR_PC_LIBDIR@|$${exec_prefix}/lib|; s|@PROJECT_VERSION@|$(MDR_VERSION)|; s|@MDR_PC_DEFS@||' \
 	  mk/mdr.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/mdr.pc
 	install -m 644 cmake/mdrConfig.cmake $(DESTDIR)$(PREFIX)/lib/cmake/mdr/
 	install -m 644 mk/mdrTargets-make.cmake $(DESTDIR)$(PREFIX)/lib/cmake/mdr/mdrTargets.cmake
