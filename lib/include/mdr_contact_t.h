@@ -270,7 +270,10 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
  *        before issue 16), else twice the root, and below R for the sphere
  *        (halfway from the root to R); at least 1.5 b for the flattened
  *        tip; power laws with n < 1/2: below their load root (min(a_x/3,
- *        root/2)), where they are stable; the flat punch: a0; a table: its
+ *        root/2)), where they are stable; n = 1/2 exactly, whose g and dl
+ *        both grow as sqrt(a) (no length sets a critical radius): 1 m,
+ *        which mdr_critical() answers with MDR_E_RADIUS (helper-33, stop
+ *        58); the flat punch: a0; a table: its
  *        last sample; the wavy profile (where the jumps depend on the
  *        start): 3 a_x of its smooth base; without adhesion the profile's
  *        length.
