@@ -184,7 +184,9 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   curves the fit cannot read: MDR_E_FEW (fewer than MDR_FIT_MIN_POINTS
  *   retract points, or fewer than MDR_FIT_MIN_CONTACT in contact, or, the
  *   full fit past a pinned top, fewer than MDR_FIT_MIN_RECEDE receding
- *   points in contact after it), or, with opts->approach, fewer than
+ *   points in contact after it, or, where the retract's straight start
+ *   leaves fewer, the retract fitted from its top missing the samples),
+ *   or, with opts->approach, fewer than
  *   MDR_FIT_MIN_POINTS approach points),
  *   MDR_E_ORDER (the samples not in time order: z not monotonic within
  *   the retract, or within the approach when it is fitted; z rising to the
@@ -225,7 +227,8 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   MDR_E_PINNED (the full fit: the retract straight to its pull-off
  *   and a line explains it better than the receding branch: a contact
  *   pinned until it ruptures; or, in noisy data, straight within its noise
- *   to the pull-off, where a pinned top could hide, and neither
+ *   to the pull-off, or from its top to fewer than MDR_FIT_MIN_RECEDE
+ *   samples above it, where a pinned top could hide, and neither
  *   opts->unpinned nor the approach (opts->approach: w_adv within
  *   MDR_FIT_NOISE_SIGMAS reported errors of w) rules it out;
  *   MDR_FIT_TWO_POINT: the retract straight within its noise from its top

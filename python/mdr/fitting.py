@@ -124,7 +124,9 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     ends), MDR_E_NOCONV,
     MDR_E_JUMPS, MDR_E_PINNED (a retract
     straight to its pull-off: pinned until it ruptures, or, in noisy data
-    without unpinned=True, a pinned top the noise hides), MDR_E_RADIUS, ...
+    without unpinned=True or approach=True, a pinned top the noise may hide,
+    also where a straight start leaves too few samples below it: a coarse
+    curve), MDR_E_RADIUS, ...
     TypeError: a bool for a number (k_machine, z_e, E0, w0), approach,
     unpinned or flat_baseline other than True, False, 0 or 1, samples that
     are not real numbers (complex, bool, strings, objects). ValueError: arith, or masked

@@ -485,3 +485,25 @@ def test_detector_lag_refused_then_trimmed():
         worst = max(worst, pull, abs(res.w - w) / res.w_err)
     print("detector lag (tau 0.5 sample): 8 of 8 refused, answered with 2 samples dropped, worst %.2f errors"
           % worst)
+
+
+def test_coarse_curve_without_hysteresis():
+    """A coarse curve without hysteresis (R 20 nm, E* 1 GPa, w = w_adv =
+    0.05, a 2 N/m lever, 51 samples a branch, noise 0.3 %): its receding
+    branch's top looks straight within the noise and leaves fewer than 16
+    samples below. The default fit refuses it MDR_E_PINNED (a pinned top
+    may hide there: the message says to fit the approach or state
+    unpinned), approach=True answers it within PULL errors (stop 59; stops
+    51 to 58 refused it MDR_E_FEW, "too few points", either way)."""
+    R, E, w, k = 20e-9, 1e9, 0.05, 2.0
+    answered = 0
+    for seed in range(6):
+        z, F, _ = jkr_curves.curve(R, E, w, w, k, 51, 2.0, 1.0, 0.003, seed=seed)
+        with pytest.raises(mdr.Error) as e:
+            mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
+        assert e.value.status in ("MDR_E_PINNED", "MDR_E_FEW"), e.value.status
+        r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k, approach=True)
+        assert abs(math.log(r.E / E)) <= PULL * r.E_err / r.E, (seed, r.E / E, r.E_err / r.E)
+        assert abs(math.log(r.w / w)) <= PULL * r.w_err / r.w, (seed, r.w / w, r.w_err / r.w)
+        answered += 1
+    assert answered == 6
