@@ -2291,6 +2291,97 @@ static void test_tilt(void **state)
     flaw_run("tilted baseline", flaw_tilt, 4, 4, 3e-3, 0, 0);
 }
 
+#ifndef MDR_TARGET_TEST
+/* Coarse curves with a pinned top (pinned_curve: the closed forms, libm),
+ * fitted: regimes[1] through 0.2 and 2 N/m, w_adv/w ratios[], tops of 1.5,
+ * 2.5 and 4 fold radii, ns[] samples (a retract, or with approach the
+ * approach branch of w_adv from the retract's lowest z to its top, then
+ * the retract: ns[] samples each, opts.approach), noise 0.3 % and 1 % of
+ * the pull-off force, 6 copies each; without the approach the first copy
+ * noise-free, which must answer within TOL_RT_CF of the truth or 5 of its
+ * errors (a misfit's), or refuse. Tallies the answers, the refusals by
+ * status, and the worst noisy answer in reported errors (printing those
+ * beyond 5). test_coarse_pinned, test_known_coarse_approach. */
+typedef struct {
+    int n_ok, n_nf, n_st[64]; /* answered (noise-free among them); refused, by -status */
+    double worst;
+} coarse_sweep_t;
+
+static void coarse_sweep(const double *ratios, int nrat, const int *ns, int nns, int approach, coarse_sweep_t *o)
+{
+    static const double tops[3] = {1.5, 2.5, 4.0}, sigs[2] = {3e-3, 1e-2}, kms[2] = {0.2, 2.0};
+    int kk, a, b, k, t, s, i;
+    memset(o, 0, sizeof *o);
+    for (kk = 0; kk < 2; kk++) {
+        for (a = 0; a < nns; a++) {
+            for (b = 0; b < 2; b++) {
+                for (k = 0; k < nrat; k++) {
+                    for (t = 0; t < 3; t++) {
+                        for (s = 0; s < 6; s++) {
+                            jkr_par p = regimes[1];
+                            const mdr_contact_f64 c = paraboloid64(p.R);
+                            const int n = ns[a], na = approach ? n : 0;
+                            const bool nf = s == 0 && !approach;
+                            mdr_fit_opts_f64 op;
+                            mdr_fit_result_f64 r;
+                            double Fpo, dev;
+                            int npin;
+                            mdr_status st;
+                            p.km = kms[kk];
+                            (void)pinned_curve(&p, ratios[k] * p.w, tops[t] * jkr_fold(&p), 2e-6, 0.0, n, zs + na,
+                                               Fs + na, &npin, &Fpo);
+                            if (approach) {
+                                mdr_contact_f64 ca;
+                                double pp[3] = {p.R, 0, 0};
+                                for (i = 0; i < n; i++) {
+                                    zs[i] = zs[2 * n - 1] + (zs[n] - zs[2 * n - 1]) * i / (n - 1);
+                                }
+                                assert_int_equal(
+                                    mdr_contact_init_f64(&ca, MDR_PROFILE_PARABOLOID, pp, p.E, ratios[k] * p.w), MDR_OK);
+                                assert_int_equal(
+                                    mdr_fit_model_f64(&ca, p.km, 2e-6, 0.0, MDR_FIT_APPROACH, zs, (uint32_t)n, Fs),
+                                    MDR_OK);
+                            }
+                            for (i = 0; i < na + n; i++) {
+                                Fs[i] += nf ? 0.0 : sigs[b] * fabs(Fpo) * gauss();
+                            }
+                            mdr_fit_defaults_f64(&op, p.km);
+                            op.approach = (uint8_t)approach;
+                            st = mdr_fit_curve_f64(&c, &op, zs, Fs, (uint32_t)(na + n), work64, 2 * NMAX, &r);
+                            if (st != MDR_OK) {
+                                o->n_st[st < 0 && st > -64 ? -st : 0]++;
+                                continue;
+                            }
+                            o->n_ok++;
+                            dev = flaw_dev(&p, &r);
+                            if (nf) { /* noise-free: to rounding, or within its errors (a misfit's) */
+                                const double e = fmax(fabs(r.E / p.E - 1.0), fabs(r.w / p.w - 1.0));
+                                o->n_nf++;
+                                if (!(e <= TOL_RT_CF) && !(dev <= 5.0)) {
+                                    fail_msg("noise-free coarse pinned top: k_m %g, %d samples, w_adv/w %.2f, top "
+                                             "%.1f: E* %.6f x, w %.6f x, %.1f errors off",
+                                             kms[kk], n, ratios[k], tops[t], r.E / p.E, r.w / p.w, dev);
+                                }
+                                continue;
+                            }
+                            if (dev > 5.0) {
+                                print_message("  coarse pinned top%s: k_m %g, %d samples, noise %g, w_adv/w %.2f, top "
+                                              "%.1f, seed %d (%d pinned, %u left out): E* %.3f x, w %.3f x, w_adv "
+                                              "%.3f w +- %.3f, %.1f errors off\n",
+                                              approach ? " with the approach" : "", kms[kk], n, sigs[b], ratios[k],
+                                              tops[t], s, npin, r.n_pinned, r.E / p.E, r.w / p.w, r.w_adv / p.w,
+                                              r.w_adv_err / p.w, dev);
+                            }
+                            o->worst = fmax(o->worst, dev);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+#endif
+
 #ifdef MDR_FIT_KNOWN_DEFECTS
 /* Coarse curves with a pinned top, the approach fitted (open, stop 59):
  * pinned_curve's retract (regimes[1], w_adv/w 0.5 to 0.95, tops of 1.5,
@@ -2307,64 +2398,16 @@ static void test_tilt(void **state)
  * every answer within 5 reported errors (the known defects' rule). */
 static void test_known_coarse_approach(void **state)
 {
-    static const double ratios[5] = {0.5, 0.7, 0.8, 0.9, 0.95}, tops[3] = {1.5, 2.5, 4.0}, sigs[2] = {3e-3, 1e-2},
-                        kms[2] = {0.2, 2.0};
+    static const double ratios[5] = {0.5, 0.7, 0.8, 0.9, 0.95};
     static const int ns[3] = {40, 60, 100};
     const uint64_t saved = noise_state;
-    int kk, a, b, k, t, s, i, n_ok = 0;
-    double worst = 0.0;
+    coarse_sweep_t o;
     (void)state;
     noise_state = 0x7654321ull;
-    for (kk = 0; kk < 2; kk++) {
-        for (a = 0; a < 3; a++) {
-            for (b = 0; b < 2; b++) {
-                for (k = 0; k < 5; k++) {
-                    for (t = 0; t < 3; t++) {
-                        for (s = 0; s < 6; s++) {
-                            jkr_par p = regimes[1];
-                            const mdr_contact_f64 c = paraboloid64(p.R);
-                            mdr_contact_f64 ca;
-                            mdr_fit_opts_f64 o;
-                            mdr_fit_result_f64 r;
-                            double Fpo, dev, pp[3] = {p.R, 0, 0};
-                            const int n = ns[a];
-                            int npin;
-                            p.km = kms[kk];
-                            (void)pinned_curve(&p, ratios[k] * p.w, tops[t] * jkr_fold(&p), 2e-6, 0.0, n, zs + n,
-                                               Fs + n, &npin, &Fpo);
-                            for (i = 0; i < n; i++) {
-                                zs[i] = zs[2 * n - 1] + (zs[n] - zs[2 * n - 1]) * i / (n - 1);
-                            }
-                            assert_int_equal(
-                                mdr_contact_init_f64(&ca, MDR_PROFILE_PARABOLOID, pp, p.E, ratios[k] * p.w), MDR_OK);
-                            assert_int_equal(
-                                mdr_fit_model_f64(&ca, p.km, 2e-6, 0.0, MDR_FIT_APPROACH, zs, (uint32_t)n, Fs), MDR_OK);
-                            for (i = 0; i < 2 * n; i++) {
-                                Fs[i] += sigs[b] * fabs(Fpo) * gauss();
-                            }
-                            mdr_fit_defaults_f64(&o, p.km);
-                            o.approach = 1;
-                            if (mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)(2 * n), work64, 2 * NMAX, &r) != MDR_OK) {
-                                continue;
-                            }
-                            n_ok++;
-                            dev = flaw_dev(&p, &r);
-                            if (dev > 5.0) {
-                                print_message("  k_m %g, %d samples, noise %g, w_adv/w %.2f, top %.1f (%d pinned, %u "
-                                              "left out): E* %.3f x, w %.3f x, w_adv %.3f w +- %.3f, %.1f errors off\n",
-                                              kms[kk], n, sigs[b], ratios[k], tops[t], npin, r.n_pinned, r.E / p.E,
-                                              r.w / p.w, r.w_adv / p.w, r.w_adv_err / p.w, dev);
-                            }
-                            worst = fmax(worst, dev);
-                        }
-                    }
-                }
-            }
-        }
-    }
-    print_message("coarse curves with a pinned top and the approach: %d of 1080 answered, worst %.2f errors\n", n_ok,
-                  worst);
-    assert_true(worst <= 5.0);
+    coarse_sweep(ratios, 5, ns, 3, 1, &o);
+    print_message("coarse curves with a pinned top and the approach: %d of 1080 answered, worst %.2f errors\n", o.n_ok,
+                  o.worst);
+    assert_true(o.worst <= 5.0);
     noise_state = saved;
 }
 
@@ -2497,77 +2540,26 @@ static void test_coarse_top(void **state)
  * 291, the same as before the fit from the top). */
 static void test_coarse_pinned(void **state)
 {
-    static const double ratios[4] = {0.0, 0.3, 0.6, 0.9}, tops[3] = {1.5, 2.5, 4.0}, sigs[2] = {3e-3, 1e-2},
-                        kms[2] = {0.2, 2.0};
+    static const double ratios[4] = {0.0, 0.3, 0.6, 0.9};
     static const int ns[4] = {40, 60, 100, 200};
     const uint64_t saved = noise_state;
-    int kk, a, b, k, t, s, i, n_ok = 0, n_nf = 0, n_st[64] = {0};
-    double worst = 0.0;
+    coarse_sweep_t o;
+    int i;
     (void)state;
     noise_state = 0x1234567ull;
-    for (kk = 0; kk < 2; kk++) {
-        for (a = 0; a < 4; a++) {
-            for (b = 0; b < 2; b++) {
-                for (k = 0; k < 4; k++) {
-                    for (t = 0; t < 3; t++) {
-                        for (s = 0; s < 6; s++) {
-                            jkr_par p = regimes[1];
-                            const mdr_contact_f64 c = paraboloid64(p.R);
-                            mdr_fit_opts_f64 o;
-                            mdr_fit_result_f64 r;
-                            double Fpo, dev;
-                            int npin;
-                            mdr_status st;
-                            p.km = kms[kk];
-                            (void)pinned_curve(&p, ratios[k] * p.w, tops[t] * jkr_fold(&p), 2e-6, 0.0, ns[a], zs, Fs,
-                                               &npin, &Fpo);
-                            for (i = 0; i < ns[a]; i++) {
-                                Fs[i] += s == 0 ? 0.0 : sigs[b] * fabs(Fpo) * gauss();
-                            }
-                            mdr_fit_defaults_f64(&o, p.km);
-                            st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)ns[a], work64, 2 * NMAX, &r);
-                            if (st != MDR_OK) {
-                                n_st[st < 0 && st > -64 ? -st : 0]++;
-                                continue;
-                            }
-                            n_ok++;
-                            dev = flaw_dev(&p, &r);
-                            if (s == 0) { /* noise-free: to rounding, or within its errors (a misfit's) */
-                                const double e = fmax(fabs(r.E / p.E - 1.0), fabs(r.w / p.w - 1.0));
-                                n_nf++;
-                                if (!(e <= TOL_RT_CF) && !(dev <= 5.0)) {
-                                    fail_msg("noise-free coarse pinned top: k_m %g, %d samples, w_adv/w %.1f, top %.1f: "
-                                             "E* %.6f x, w %.6f x, %.1f errors off",
-                                             kms[kk], ns[a], ratios[k], tops[t], r.E / p.E, r.w / p.w, dev);
-                                }
-                                continue;
-                            }
-                            if (dev > 5.0) {
-                                print_message("  coarse pinned top: k_m %g, %d samples, noise %g, w_adv/w %.1f, top "
-                                              "%.1f, seed %d (%d pinned, %u left out): E* %.3f x, w %.3f x, %.1f "
-                                              "errors off\n",
-                                              kms[kk], ns[a], sigs[b], ratios[k], tops[t], s, npin, r.n_pinned,
-                                              r.E / p.E, r.w / p.w, dev);
-                            }
-                            worst = fmax(worst, dev);
-                        }
-                    }
-                }
-            }
-        }
-    }
+    coarse_sweep(ratios, 4, ns, 4, 0, &o);
     print_message("coarse curves with a pinned top: %d of 960 noisy ones answered, worst %.2f errors; %d of 192 "
                   "noise-free\n",
-                  n_ok - n_nf, worst, n_nf);
-    assert_true(worst <= 5.0);
+                  o.n_ok - o.n_nf, o.worst, o.n_nf);
     for (i = 1; i < 64; i++) {
-        if (n_st[i] > 0) {
-            print_message("  refused %s: %d\n", mdr_status_str((mdr_status)-i), n_st[i]);
+        if (o.n_st[i] > 0) {
+            print_message("  refused %s: %d\n", mdr_status_str((mdr_status)-i), o.n_st[i]);
         }
     }
-    assert_true(n_ok - n_nf >= 250);
+    assert_true(o.worst <= 5.0);
+    assert_true(o.n_ok - o.n_nf >= 250);
     /* (a pinned top the fit from the top misses: MDR_E_FEW, not a misfit) */
-    assert_true(n_st[-MDR_E_FEW] >= 40 && n_st[-MDR_E_MISFIT] <= 30);
+    assert_true(o.n_st[-MDR_E_FEW] >= 40 && o.n_st[-MDR_E_MISFIT] <= 30);
     noise_state = saved;
 }
 
