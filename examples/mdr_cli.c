@@ -1170,7 +1170,14 @@ int main(int argc, char **argv)
         return usage_errf("unknown command: %s (mdr --help)", argv[1]);
     }
     if (A.cmd == CMD_FIT) {
-        return fit_main(argc, argv);
+        rc = fit_main(argc, argv);
+        /* (as below: a result JSON or map rows lost to a full disk or a
+         * closed stdout exited 0; helper-36, stop 59) */
+        if (fflush(stdout) != 0 || ferror(stdout)) {
+            perror("mdr: stdout");
+            rc = rc != 0 ? rc : 1;
+        }
+        return rc;
     }
     rc = cli_collect(argc, argv, 2, NULL, kv, &nkv);
     if (rc == 3) {

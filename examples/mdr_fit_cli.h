@@ -13,14 +13,17 @@
  *   <profile>  --profile paraboloid --R R | cone --theta RAD | powerlaw --C C
  *              --n N | sphere --R R | flattip --R R --b B | wavy --R R --h H
  *              --lambda L (the flat punch cannot be fitted: mdr_fit_t.h)
- *   curve.csv  a header line, then z,F rows in time order (z the base
- *              position [m], increasing toward the sample; F the force [N],
- *              compressive positive); the retract is the part from the
- *              largest z on. Lines starting with '#' and empty lines are
- *              skipped.
- *   map.csv    a header line, then curve,z,F rows, each curve's rows
- *              contiguous and in time order (curve: any label without a
- *              comma).
+ *   curve.csv  a header line (optional: a first field that does not
+ *              start as a number would), then z,F rows in time order (z
+ *              the base position [m], increasing toward the sample; F the
+ *              force [N], compressive positive); the retract is the part
+ *              from the largest z on. Lines starting with '#' and empty
+ *              lines are skipped; a UTF-8 byte order mark is dropped.
+ *   map.csv    a header line (optional, the same), then curve,z,F rows,
+ *              each curve's rows contiguous and in time order (curve: any
+ *              label without a comma or a double quote, not starting with
+ *              '#'). A bad row stops the map (exit 2) after the rows of the
+ *              curves before the one it stops, whatever --jobs.
  *   --arith    f64 (default) or f32
  *   --method   full (default: Levenberg-Marquardt) or two-point
  *   --z-e      equilibrium distance of the Tabor parameter [m], 0.3e-9
@@ -166,6 +169,7 @@ typedef struct {
     char *buf;
     size_t cap;
     long line;
+    double vmax; /* the largest |value| of the arithmetic (--arith f32: FLT_MAX) */
 } fit_reader;
 
 /* the longest line and the most points of one curve that mdr fit reads */
@@ -221,6 +225,13 @@ static long fit_getline(fit_reader *r)
     if (len > 0 && r->buf[len - 1] == '\r') {
         len--;
     }
+    /* a UTF-8 byte order mark before the first line (a spreadsheet's
+     * export): without a header it made the first row the header (--curve)
+     * or a label of its own (--map); helper-36, stop 59 */
+    if (r->line == 0 && len >= 3 && memcmp(r->buf, "\xEF\xBB\xBF", 3) == 0) {
+        memmove(r->buf, r->buf + 3, len - 3);
+        len -= 3;
+    }
     r->buf[len] = '\0';
     r->line++;
     return (long)len;
@@ -239,6 +250,17 @@ static int fit_skip(const char *s)
         s++;
     }
     return *s == '\0' || *s == '#';
+}
+
+/* a header's field [s, e): text that does not start as a number would (a
+ * first data row with a typo, "1.9e-O6,1e-12", was taken for the header
+ * and dropped, exit 0; helper-36, stop 59) */
+static int fit_header_field(const char *s, const char *e)
+{
+    while (s < e && (*s == ' ' || *s == '\t')) {
+        s++;
+    }
+    return s < e && strchr("0123456789+-.", *s) == NULL;
 }
 
 /* one number field [s, e) */
@@ -286,6 +308,10 @@ static int fit_row(const fit_reader *r, char *f[3][2], int k0, double *z, double
     }
     if (*z != *z || *F != *F || *z - *z != 0.0 || *F - *F != 0.0) {
         return fit_bad_line(r, "not a finite number (NaN or inf)");
+    }
+    if (*z > r->vmax || *z < -r->vmax || *F > r->vmax || *F < -r->vmax) {
+        /* (the fit refused it as MDR_E_NONFINITE, no line named) */
+        return fit_bad_line(r, "outside the range of --arith f32");
     }
     return 0;
 }
@@ -458,7 +484,7 @@ static void fit_json_end(cli_json *j, const struct fit_args *A)
 
 static int fit_curve_cmd(const struct fit_args *A)
 {
-    fit_reader r = {NULL, NULL, NULL, 0, 0};
+    fit_reader r = {NULL, NULL, NULL, 0, 0, DBL_MAX};
     fit_curve c;
     fit_scratch s = {NULL, 0};
     int rc = 0, header = 0;
@@ -466,6 +492,7 @@ static int fit_curve_cmd(const struct fit_args *A)
     cli_json j;
     memset(&c, 0, sizeof c);
     r.name = A->file;
+    r.vmax = A->f64 ? DBL_MAX : (double)FLT_MAX;
     r.fp = fopen(A->file, "rb");
     if (r.fp == NULL) {
         return usage_sys("cannot open", A->file);
@@ -483,7 +510,7 @@ static int fit_curve_cmd(const struct fit_args *A)
         }
         if (fit_fields(r.buf, f) != 2) {
             rc = fit_bad_line(&r, "expected two fields z,F");
-        } else if (!header && !fit_num(f[0][0], f[0][1], &z)) {
+        } else if (!header && !fit_num(f[0][0], f[0][1], &z) && fit_header_field(f[0][0], f[0][1])) {
             header = 1; /* the header line */
         } else {
             header = 1;
@@ -739,10 +766,9 @@ typedef struct {
     long line;
 } fit_pending;
 
-/* Read up to max curves into ch[] (reusing their buffers; the pending row
- * of the previous call first). Returns the number read, or -2 on a bad
- * file (the message printed). */
-static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_curve *ch, size_t max)
+/* fit_read_chunk's reading: the number read, or -2 - k on a bad row after
+ * k curves ended */
+static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_curve *ch, size_t max)
 {
     size_t k = 0, i;
     int active = 0;
@@ -756,7 +782,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         pd->have = 0;
         if (fit_push(&ch[0], pd->z, pd->F, pd->line) != 0) {
             (void)fit_bad_line(r, fit_push_why(&ch[0]));
-            return -2;
+            return -2 - (long)k;
         }
         active = 1;
     }
@@ -766,7 +792,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         int sn;
         long got = fit_getline(r);
         if (got == -2) {
-            return -2;
+            return -2 - (long)k;
         }
         if (got < 0) {
             return (long)(k + (size_t)active);
@@ -776,27 +802,34 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         }
         if (fit_fields(r->buf, f) != 3) {
             (void)fit_bad_line(r, "expected three fields curve,z,F");
-            return -2;
+            return -2 - (long)k;
         }
-        if (!pd->header && !fit_num(f[1][0], f[1][1], &z)) {
+        if (!pd->header && !fit_num(f[1][0], f[1][1], &z) && fit_header_field(f[1][0], f[1][1])) {
             pd->header = 1; /* the header line */
             continue;
         }
         pd->header = 1;
         if (fit_row(r, f, 1, &z, &F) != 0) {
-            return -2;
+            return -2 - (long)k;
         }
         if (active && fit_same_label(ch[k].label, f[0][0], f[0][1])) {
             if (fit_push(&ch[k], z, F, r->line) != 0) {
                 (void)fit_bad_line(r, fit_push_why(&ch[k]));
-                return -2;
+                return -2 - (long)k;
             }
             continue;
         }
         label = fit_label(f[0][0], f[0][1]);
         if (label == NULL) {
             (void)fit_bad_line(r, "out of memory");
-            return -2;
+            return -2 - (long)k;
+        }
+        if (strchr(label, '"') != NULL) {
+            /* (written as it is, it opened a quoted field in the output
+             * CSV that swallowed the rows after it; helper-36, stop 59) */
+            free(label);
+            (void)fit_bad_line(r, "a curve label with a double quote (the output is CSV: use a label without one)");
+            return -2 - (long)k;
         }
         /* a new curve */
         sn = fit_seen_add(seen, label);
@@ -806,7 +839,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
                            sn > 0 ? " appears again: the rows of a curve must be contiguous" : ": out of memory");
             free(label);
             (void)fit_bad_line(r, msg);
-            return -2;
+            return -2 - (long)k;
         }
         if (active) {
             k++;
@@ -824,9 +857,27 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
         active = 1;
         if (fit_push(&ch[k], z, F, r->line) != 0) {
             (void)fit_bad_line(r, fit_push_why(&ch[k]));
-            return -2;
+            return -2 - (long)k;
         }
     }
+}
+
+/* Read up to max curves into ch[] (reusing their buffers; the pending row
+ * of the previous call first). Returns the number read; on a bad row
+ * (the message printed) *bad = 1 and the number of curves read whole
+ * before it (those before the curve in reading at the bad row, which is
+ * not written even where the bad row would start the next), so that a map
+ * stopped by a bad row writes the same curves whatever --jobs (helper-36, stop 59: 32, 0 and 0 curves at --jobs 1, 2
+ * and 4 for a bad row in the 41st curve, the rows of the chunk in reading
+ * dropped). */
+static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_curve *ch, size_t max, int *bad)
+{
+    long n = fit_read_chunk1(r, seen, pd, ch, max);
+    if (n >= 0) {
+        return n;
+    }
+    *bad = 1;
+    return -n - 2;
 }
 
 static void fit_map_row(const fit_curve *c, int f64)
@@ -868,7 +919,7 @@ static void fit_progress(long done_bytes, long total, unsigned long curves, doub
 
 static int fit_map_cmd(const struct fit_args *A)
 {
-    fit_reader r = {NULL, NULL, NULL, 0, 0};
+    fit_reader r = {NULL, NULL, NULL, 0, 0, DBL_MAX};
     fit_seen seen = {NULL, 0, 0};
     fit_pending pd = {0, 0, NULL, 0.0, 0.0, 0};
     fit_pool P;
@@ -876,10 +927,11 @@ static int fit_map_cmd(const struct fit_args *A)
     fit_curve *buf[2];
     size_t chunk = (size_t)32 * (size_t)A->jobs, i;
     long n[2], total = 0;
-    int cur = 0, rc = 0, tty = isatty(STDERR_FILENO), nth = 0, failed = 0;
+    int cur = 0, rc = 0, tty = isatty(STDERR_FILENO), nth = 0, failed = 0, bad = 0;
     unsigned long curves = 0;
     double t0 = fit_now();
     r.name = A->file;
+    r.vmax = A->f64 ? DBL_MAX : (double)FLT_MAX;
     r.fp = fopen(A->file, "rb");
     if (r.fp == NULL) {
         return usage_sys("cannot open", A->file);
@@ -915,12 +967,12 @@ static int fit_map_cmd(const struct fit_args *A)
         rc = usage_error("cannot start a thread", NULL);
     }
     printf("curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope\n");
-    n[0] = rc == 0 ? fit_read_chunk(&r, &seen, &pd, buf[0], chunk) : 0;
-    rc = n[0] < 0 ? 2 : rc;
+    n[0] = rc == 0 ? fit_read_chunk(&r, &seen, &pd, buf[0], chunk, &bad) : 0;
     while (rc == 0 && n[cur] > 0) {
         fit_pool_submit(&P, buf[cur], (size_t)n[cur]);
-        /* read the next chunk while the workers fit this one */
-        n[1 - cur] = fit_read_chunk(&r, &seen, &pd, buf[1 - cur], chunk);
+        /* read the next chunk while the workers fit this one (none after
+         * a bad row: the curves before it are written, then exit 2) */
+        n[1 - cur] = bad ? 0 : fit_read_chunk(&r, &seen, &pd, buf[1 - cur], chunk, &bad);
         fit_pool_wait(&P);
         for (i = 0; i < (size_t)n[cur]; i++) {
             fit_map_row(&buf[cur][i], A->f64);
@@ -930,11 +982,9 @@ static int fit_map_cmd(const struct fit_args *A)
         if (tty) {
             fit_progress(ftell(r.fp), total, curves, t0);
         }
-        if (n[1 - cur] < 0) {
-            rc = 2;
-        }
         cur = 1 - cur;
     }
+    rc = bad ? 2 : rc;
     if (rc == 0 && ferror(r.fp)) {
         rc = usage_sys("read error in", A->file);
     }

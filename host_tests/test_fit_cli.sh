@@ -545,5 +545,45 @@ expect2 "long line" "long.csv:2: line longer than 65534 characters" fit --curve 
 printf 'z,F\n1e-9,2\n3e-9\0,4\n5e-9,1\n' >"$TMP/nul.csv"
 expect2 "NUL byte" "nul.csv:3: a NUL byte" fit --curve "$TMP/nul.csv" $TIP --k-machine 0.2
 
+# helper-36 (stop 59): results lost to a full disk exited 0; a map stopped
+# by a bad row wrote 32, 0 or 0 curves at --jobs 1, 2, 4 (now every curve
+# before the one the bad row stops, for any --jobs); a first data row with
+# a typo was taken for the header and dropped (exit 0); a byte order mark
+# without a header did the same (--curve) or made a label of its own
+# (--map); a label with a double quote broke the output CSV; a value
+# beyond float with --arith f32 was refused without its line
+if [ -w /dev/full ]; then
+    "$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 >/dev/full 2>"$TMP/err"
+    [ $? -eq 1 ] && grep -q '^mdr: stdout: ' "$TMP/err" && ok || bad "fit --curve to a full disk: exit 1 and one line"
+    "$MDR" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 >/dev/full 2>"$TMP/err"
+    [ $? -eq 1 ] && grep -q '^mdr: stdout: ' "$TMP/err" && ok || bad "fit --map to a full disk: exit 1 and one line"
+fi
+awk 'BEGIN { print "curve,z,F"; for (c = 0; c < 100; c++) for (i = 0; i < 3; i++) printf "c%d,%g,%g\n", c, 3e-9 - 1e-9 * i, 1e-9 }' >"$TMP/tiny.csv"
+awk 'NR == 3 * 40 + 3 { print "c40,1e-9,oops"; next } { print }' "$TMP/tiny.csv" >"$TMP/tinybad.csv"
+for J in 1 2 4; do
+    "$MDR" fit --map "$TMP/tinybad.csv" $TIP --k-machine 0.2 --jobs $J >"$TMP/tiny$J.out" 2>"$TMP/err"
+    rc=$?
+    [ $rc -eq 2 ] && [ "$(tail -n +2 "$TMP/tiny$J.out" | wc -l)" -eq 40 ] && [ "$(tail -1 "$TMP/tiny$J.out" | cut -d, -f1)" = c39 ] &&
+        [ "$(wc -l <"$TMP/err")" -eq 1 ] && grep -q 'tinybad.csv:123: not a number' "$TMP/err" && ok ||
+        bad "map stopped by a bad row, --jobs $J: exit $rc, $(tail -n +2 "$TMP/tiny$J.out" | wc -l) rows (want 2, the 40 curves before it)"
+done
+cmp -s "$TMP/tiny1.out" "$TMP/tiny4.out" && ok || bad "map stopped by a bad row: --jobs 1 and 4 differ"
+{ echo '1.9e-O6,1e-12'; tail -n +2 "$TMP/c.csv"; } >"$TMP/typo.csv"
+expect2 "a typo in the first row (no header)" "typo.csv:1: not a number" fit --curve "$TMP/typo.csv" $TIP --k-machine 0.2
+tail -n +2 "$TMP/c.csv" >"$TMP/nohead.csv"
+printf '\357\273\277' | cat - "$TMP/nohead.csv" >"$TMP/bom.csv"
+a=$("$MDR" fit --curve "$TMP/nohead.csv" $TIP --k-machine 0.2 --approach)
+b=$("$MDR" fit --curve "$TMP/bom.csv" $TIP --k-machine 0.2 --approach)
+[ -n "$(key "$a" E)" ] && [ "$(key "$a" E)" = "$(key "$b" E)" ] && [ "$(key "$a" n_approach)" = "$(key "$b" n_approach)" ] &&
+    ok || bad "a byte order mark without a header: $(key "$b" n_approach) approach samples, $(key "$a" n_approach) without it"
+tail -n +2 "$TMP/tiny.csv" | head -6 >"$TMP/tinynohead.csv"
+printf '\357\273\277' | cat - "$TMP/tinynohead.csv" >"$TMP/tinybom.csv"
+[ "$("$MDR" fit --map "$TMP/tinybom.csv" $TIP --k-machine 0.2 | cut -d, -f1 | tr '\n' ' ')" = "curve c0 c1 " ] &&
+    ok || bad "map with a byte order mark: labels c0 c1"
+{ echo curve,z,F; sed 's/^c1,/"x,/' "$TMP/tinynohead.csv"; } >"$TMP/quote.csv"
+expect2 "a label with a double quote" "quote.csv:5: a curve label with a double quote" fit --map "$TMP/quote.csv" $TIP --k-machine 0.2
+{ echo z,F; echo 1.9e-6,1e39; tail -n +2 "$TMP/c.csv"; } >"$TMP/big.csv"
+expect2 "beyond float with --arith f32" "big.csv:2: outside the range of --arith f32" fit --curve "$TMP/big.csv" $TIP --k-machine 0.2 --arith f32
+
 echo "fit cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
