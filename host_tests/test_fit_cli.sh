@@ -544,6 +544,9 @@ expect2 "/dev/zero map" "/dev/zero:1: a NUL byte" fit --map /dev/zero $TIP --k-m
 expect2 "long line" "long.csv:2: line longer than 65534 characters" fit --curve "$TMP/long.csv" $TIP --k-machine 0.2
 printf 'z,F\n1e-9,2\n3e-9\0,4\n5e-9,1\n' >"$TMP/nul.csv"
 expect2 "NUL byte" "nul.csv:3: a NUL byte" fit --curve "$TMP/nul.csv" $TIP --k-machine 0.2
+# (on a last line without a newline the rest was dropped unseen: helper-36, stop 59)
+printf 'z,F\n1e-9,2\n3e-9,4\n5e-9,1\0009' >"$TMP/nullast.csv"
+expect2 "NUL byte on a last line without a newline" "nullast.csv:4: a NUL byte" fit --curve "$TMP/nullast.csv" $TIP --k-machine 0.2
 
 # helper-36 (stop 59): results lost to a full disk exited 0; a map stopped
 # by a bad row wrote 32, 0 or 0 curves at --jobs 1, 2, 4 (now every curve
