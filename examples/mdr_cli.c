@@ -680,7 +680,8 @@ static const char usage_main[] =
     "\n"
     "Every flag is --flag VALUE or --flag=VALUE, given once; SI units (m, N, Pa, J/m^2).\n"
     "Results on stdout, errors on stderr (one line). Exit status: 0 ok, 1 a computation\n"
-    "that fails (iteration cap, edge beyond the table), 2 bad arguments or input.\n"
+    "that fails (iteration cap, edge beyond the table, q31 results saturated, results\n"
+    "that cannot be written), 2 bad arguments or input.\n"
     "mdr --version: the library's version.\n";
 
 static const char *const usage_cmd[NCMD] = {
@@ -1127,6 +1128,10 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
     }
     if (A->q31 && A->cmd != CMD_CYCLE && A->cmd != CMD_TABLE) {
         return usage_error("--arith q31 works with cycle and table only", NULL);
+    }
+    if (A->output != NULL && A->header != NULL && strcmp(A->output, A->header) == 0) {
+        /* (the .c overwrote the header and included itself; helper-37, stop 59) */
+        return usage_error("--output and --header name the same file", A->output);
     }
     if (A->output != NULL && A->header == NULL) {
         size_t l = strlen(A->output);

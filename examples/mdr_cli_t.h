@@ -426,6 +426,19 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
                               "+-2 %s = +-%.17g %s", seg + 1, j, mdr_host_path_value(A->path, A->steps, seg, j), si,
                               un, 2.0 * unit, si);
         }
+        /* a nonzero vertex that rounds to 0 LSB: a cycle the q31 engine
+         * never makes (a path to 2e-12 N under load gave no event, every
+         * row 0, exit 0; helper-37, stop 59) */
+        for (seg = 0; seg < A->npath; seg++) {
+            int32_t raw;
+            if (A->path[seg] != 0.0 && mdr_host_q31_raw(A->path[seg], unit, &raw) == MDR_OK && raw == 0) {
+                free(qnodes);
+                free(nodes);
+                return usage_errf("--path value %ld (%.9g %s): below half a q31 LSB of %s (one LSB: %.9g %s), it "
+                                  "rounds to 0; --arith f32",
+                                  seg + 1, A->path[seg], si, un, unit / 536870912.0, si);
+            }
+        }
     }
     if (A->summary != NULL) {
         /* the summary's first byte written through at once: a file that
@@ -525,8 +538,11 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     /* energy: Q15.48 of W0 = F0 D0 for q31 */
     dissipated = A->q31 ? mdr_host_q31_energy(&Q, Q.e.en.dissipated) : (double)eng.en.dissipated;
     if (A->q31 && (Q.e.flags & MDR_FLAG_SAT)) {
+        /* saturated numbers are no results: exit 1 (it was 0 with this
+         * warning; helper-37, stop 59) */
         fprintf(stderr, "mdr: q31 inputs or results saturated (beyond +-2 units: D0 = %.9g m, "
                         "F0 = %.9g N)\n", Q.D0, Q.F0);
+        rc = rc ? rc : 1;
     }
     if (sum == NULL) {
         json_begin(&js, stderr, CLI_F64);
@@ -570,6 +586,9 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     json_key_only(&js, "d1");
     json_key_only(&js, "F1");
     json_end(&js, A);
+    if (sum == NULL && (fflush(stderr) != 0 || ferror(stderr))) {
+        rc = rc ? rc : 1; /* the summary on stderr lost (2>/dev/full: exit 0 before; helper-37, stop 59) */
+    }
     if (sum != NULL) {
         const int werr = ferror(sum);
         if (fclose(sum) != 0 || werr) {
@@ -605,6 +624,9 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
                 d = (CLI_T)A->d;
                 F = e.F + (CLI_T)2 * c.E * e.a * (d - e.d);
                 st = CLI_SFX(mdr_stress_intensity)(&c, e.a, d, &K, &G);
+                if (st == MDR_OK && !(F - F == (CLI_T)0)) {
+                    st = MDR_E_OVERFLOW; /* (printed "F": inf, exit 0; helper-37, stop 59) */
+                }
                 if (st != MDR_OK) {
                     return cli_fail("--a/--d", st);
                 }

@@ -703,5 +703,21 @@ refuse "^mdr: engine \(--springs, --a-max, table to 4.5e-07 m\): the flat.s rim 
 out=$("$MDR" cycle $P --w 1e-8 --springs 90 --arith f64 2>&1 >/dev/null) && awk -v F="$(key "$out" pull_off_F)" 'BEGIN { r = F / -sqrt(8 * 3.141592653589793 * 1.25e-25 * 1e9 * 1e-8) - 1; exit !(r * r < 1e-20) }' &&
     ok || bad "the rim on node 1: Kendall's pull-off ($out)"
 
+# helper-37 (stop 59): a state --a --d beyond the arithmetic printed "F": inf
+# with exit 0; a q31 path vertex below half an LSB rounded to 0 (no contact,
+# no event, exit 0); a cycle's summary lost on stderr exited 0; --output and
+# --header the same file wrote a .c that included itself
+refuse '^mdr: --a/--d: result beyond' eq --profile paraboloid --R 1e6 --E 1e30 --w 0.05 --a 1e3 --d 1e6
+refuse '^mdr: --a/--d: result beyond' eq --profile paraboloid --R 1e200 --E 1e200 --w 0.05 --a 1e100 --d 1e10 --arith f64
+refuse '^mdr: --path value 2 \(2e-12 N\): below half a q31 LSB of F0' cycle --profile paraboloid --R 1e-3 --E 1e6 \
+    --w 0.05 --w-adv 0.05 --control load --path 0,2e-12,-1e-3 --steps-per-segment 10 --arith q31
+if [ -w /dev/full ]; then
+    $MDR cycle --profile paraboloid --R 1e-3 --E 1e6 --w 0.05 --control grips --path 0,1e-6,-3e-6 \
+        --steps-per-segment 10 >/dev/null 2>/dev/full
+    [ $? -eq 1 ] && ok || bad "cycle: the summary on stderr lost (/dev/full) exits 1"
+fi
+refuse '^mdr: --output and --header name the same file' table --profile paraboloid --R 1e-3 --a-max 1e-4 \
+    --header "$TMP/same.h" --output "$TMP/same.h"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
