@@ -2382,6 +2382,22 @@ static void coarse_sweep(const double *ratios, int nrat, const int *ns, int nns,
         }
     }
 }
+
+/* coarse_sweep's curves with the approach fitted: w_adv/w 0.5 to 0.95, 40,
+ * 60 and 100 samples a branch (test_coarse_approach,
+ * test_known_coarse_approach) */
+static void coarse_approach_sweep(coarse_sweep_t *o)
+{
+    static const double ratios[5] = {0.5, 0.7, 0.8, 0.9, 0.95};
+    static const int ns[3] = {40, 60, 100};
+    const uint64_t saved = noise_state;
+    noise_state = 0x7654321ull;
+    coarse_sweep(ratios, 5, ns, 3, 1, o);
+    print_message("coarse curves with a pinned top and the approach: %d of 1080 answered, %d beyond 5 errors (worst "
+                  "%.2f)\n",
+                  o->n_ok, o->n_bad, o->worst);
+    noise_state = saved;
+}
 #endif
 
 #ifdef MDR_FIT_KNOWN_DEFECTS
@@ -2401,17 +2417,10 @@ static void coarse_sweep(const double *ratios, int nrat, const int *ns, int nns,
  * every answer within 5 reported errors (the known defects' rule). */
 static void test_known_coarse_approach(void **state)
 {
-    static const double ratios[5] = {0.5, 0.7, 0.8, 0.9, 0.95};
-    static const int ns[3] = {40, 60, 100};
-    const uint64_t saved = noise_state;
     coarse_sweep_t o;
     (void)state;
-    noise_state = 0x7654321ull;
-    coarse_sweep(ratios, 5, ns, 3, 1, &o);
-    print_message("coarse curves with a pinned top and the approach: %d of 1080 answered, worst %.2f errors\n", o.n_ok,
-                  o.worst);
+    coarse_approach_sweep(&o);
     assert_true(o.worst <= 5.0);
-    noise_state = saved;
 }
 
 /* A curved baseline (open, stop 40): F + c |F_po| 4 ((z - zmid)/span)^2,
@@ -2531,18 +2540,10 @@ static void test_coarse_top(void **state)
  * 5.8). Tolerances: at most 1 answer beyond 5 errors, none beyond 6. */
 static void test_coarse_approach(void **state)
 {
-    static const double ratios[5] = {0.5, 0.7, 0.8, 0.9, 0.95};
-    static const int ns[3] = {40, 60, 100};
-    const uint64_t saved = noise_state;
     coarse_sweep_t o;
     (void)state;
-    noise_state = 0x7654321ull;
-    coarse_sweep(ratios, 5, ns, 3, 1, &o);
-    print_message("coarse curves with a pinned top and the approach: %d of 1080 answered, %d beyond 5 errors (worst "
-                  "%.2f)\n",
-                  o.n_ok, o.n_bad, o.worst);
+    coarse_approach_sweep(&o);
     assert_true(o.n_bad <= 1 && o.worst <= 6.0);
-    noise_state = saved;
 }
 
 /* Real pinned tops on coarse curves, the rival of test_coarse_top
