@@ -1148,6 +1148,17 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
     return 0;
 }
 
+/* rc of a command whose results are on stdout: a write error there (a full
+ * disk, a closed stdout) fails the run, 1 with one line */
+static int stdout_written(int rc)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        perror("mdr: stdout");
+        return 1;
+    }
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     struct cli_args A;
@@ -1175,14 +1186,9 @@ int main(int argc, char **argv)
         return usage_errf("unknown command: %s (mdr --help)", argv[1]);
     }
     if (A.cmd == CMD_FIT) {
-        rc = fit_main(argc, argv);
-        /* (as below: a result JSON or map rows lost to a full disk or a
-         * closed stdout exited 0; helper-36, stop 59) */
-        if (fflush(stdout) != 0 || ferror(stdout)) {
-            perror("mdr: stdout");
-            rc = rc != 0 ? rc : 1;
-        }
-        return rc;
+        /* (a result JSON or map rows lost to a full disk or a closed
+         * stdout exited 0; helper-36, stop 59) */
+        return stdout_written(fit_main(argc, argv));
     }
     rc = cli_collect(argc, argv, 2, NULL, kv, &nkv);
     if (rc == 3) {
@@ -1193,12 +1199,7 @@ int main(int argc, char **argv)
         rc = parse_args(&A, kv, nkv);
     }
     if (rc == 0) {
-        rc = A.f64 ? run_f64(&A) : run_f32(&A);
-        /* the results are on stdout: a write error (a full disk) fails the run */
-        if (fflush(stdout) != 0 || ferror(stdout)) {
-            perror("mdr: stdout");
-            rc = 1;
-        }
+        rc = stdout_written(A.f64 ? run_f64(&A) : run_f32(&A));
     }
     free_args(&A);
     return rc;

@@ -179,6 +179,14 @@ typedef struct {
 
 static int fit_bad_line(const fit_reader *r, const char *why);
 
+/* at the end of the file, a last line of got characters that ends before
+ * the file does (where it has positions): a NUL byte cut it short */
+static int fit_short_end(const fit_reader *r, size_t got)
+{
+    const long pos = ftell(r->fp);
+    return pos >= 0 && pos != r->off + (long)got;
+}
+
 /* the next line (newline removed) in r->buf: its length, -1 at the end of
  * the file, on a read error (ferror tells) or out of memory, or -2 after a
  * message naming the line: a NUL byte (not a text file: /dev/zero is
@@ -215,8 +223,7 @@ static long fit_getline(fit_reader *r)
          * line without a newline (the end of the file) the bytes read
          * tell, where the file has positions (a NUL there cut the line
          * short unseen: helper-36, stop 59) */
-        if ((got == 0 || r->buf[len + got - 1] != '\n') && got + 1 < room &&
-            (!feof(r->fp) || (ftell(r->fp) >= 0 && ftell(r->fp) != r->off + (long)got))) {
+        if ((got == 0 || r->buf[len + got - 1] != '\n') && got + 1 < room && (!feof(r->fp) || fit_short_end(r, got))) {
             r->line++;
             (void)fit_bad_line(r, "a NUL byte (not a text file)");
             return -2;
@@ -775,9 +782,22 @@ typedef struct {
     long line;
 } fit_pending;
 
-/* fit_read_chunk's reading: the number read, or -2 - k on a bad row after
- * k curves ended */
-static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_curve *ch, size_t max)
+/* a bad row after k curves read whole: *bad set, k returned (fit_read_chunk) */
+static long fit_stop(int *bad, size_t k)
+{
+    *bad = 1;
+    return (long)k;
+}
+
+/* Read up to max curves into ch[] (reusing their buffers; the pending row
+ * of the previous call first). Returns the number read; on a bad row
+ * (the message printed) *bad = 1 and the number of curves read whole
+ * before it (those before the curve in reading at the bad row, which is
+ * not written even where the bad row would start the next), so that a map
+ * stopped by a bad row writes the same curves whatever --jobs
+ * (helper-36, stop 59: 32, 0 and 0 curves at --jobs 1, 2 and 4 for a bad
+ * row in the 41st curve, the rows of the chunk in reading dropped). */
+static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_curve *ch, size_t max, int *bad)
 {
     size_t k = 0, i;
     int active = 0;
@@ -791,7 +811,7 @@ static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_
         pd->have = 0;
         if (fit_push(&ch[0], pd->z, pd->F, pd->line) != 0) {
             (void)fit_bad_line(r, fit_push_why(&ch[0]));
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
         active = 1;
     }
@@ -801,7 +821,7 @@ static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_
         int sn;
         long got = fit_getline(r);
         if (got == -2) {
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
         if (got < 0) {
             return (long)(k + (size_t)active);
@@ -811,7 +831,7 @@ static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_
         }
         if (fit_fields(r->buf, f) != 3) {
             (void)fit_bad_line(r, "expected three fields curve,z,F");
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
         if (!pd->header && !fit_num(f[1][0], f[1][1], &z) && fit_header_field(f[1][0], f[1][1])) {
             pd->header = 1; /* the header line */
@@ -819,26 +839,26 @@ static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_
         }
         pd->header = 1;
         if (fit_row(r, f, 1, &z, &F) != 0) {
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
         if (active && fit_same_label(ch[k].label, f[0][0], f[0][1])) {
             if (fit_push(&ch[k], z, F, r->line) != 0) {
                 (void)fit_bad_line(r, fit_push_why(&ch[k]));
-                return -2 - (long)k;
+                return fit_stop(bad, k);
             }
             continue;
         }
         label = fit_label(f[0][0], f[0][1]);
         if (label == NULL) {
             (void)fit_bad_line(r, "out of memory");
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
         if (strchr(label, '"') != NULL) {
             /* (written as it is, it opened a quoted field in the output
              * CSV that swallowed the rows after it; helper-36, stop 59) */
             free(label);
             (void)fit_bad_line(r, "a curve label with a double quote (the output is CSV: use a label without one)");
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
         /* a new curve */
         sn = fit_seen_add(seen, label);
@@ -848,7 +868,7 @@ static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_
                            sn > 0 ? " appears again: the rows of a curve must be contiguous" : ": out of memory");
             free(label);
             (void)fit_bad_line(r, msg);
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
         if (active) {
             k++;
@@ -866,27 +886,9 @@ static long fit_read_chunk1(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_
         active = 1;
         if (fit_push(&ch[k], z, F, r->line) != 0) {
             (void)fit_bad_line(r, fit_push_why(&ch[k]));
-            return -2 - (long)k;
+            return fit_stop(bad, k);
         }
     }
-}
-
-/* Read up to max curves into ch[] (reusing their buffers; the pending row
- * of the previous call first). Returns the number read; on a bad row
- * (the message printed) *bad = 1 and the number of curves read whole
- * before it (those before the curve in reading at the bad row, which is
- * not written even where the bad row would start the next), so that a map
- * stopped by a bad row writes the same curves whatever --jobs (helper-36, stop 59: 32, 0 and 0 curves at --jobs 1, 2
- * and 4 for a bad row in the 41st curve, the rows of the chunk in reading
- * dropped). */
-static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_curve *ch, size_t max, int *bad)
-{
-    long n = fit_read_chunk1(r, seen, pd, ch, max);
-    if (n >= 0) {
-        return n;
-    }
-    *bad = 1;
-    return -n - 2;
 }
 
 static void fit_map_row(const fit_curve *c, int f64)
