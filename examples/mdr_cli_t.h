@@ -49,6 +49,28 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
                                            buf);
         return st == MDR_OK ? 0 : cli_fail(st == MDR_E_PARAM ? "--E/--w" : A->file, st);
     }
+    if (sizeof(CLI_T) < sizeof(double)) {
+        /* a profile that f32's rounding of its parameters moves beyond
+         * f32's accuracy (the cone near pi/2: mdr_host_f32_shape_change) */
+        double ch;
+        const int no = mdr_host_f32_shape_refused(A->kind, A->p, &ch);
+        int k;
+        for (k = 0; k < 3 && profiles[A->pi].flags[k] != NULL && no; k++) {
+            if ((double)(float)A->p[k] != A->p[k]) {
+                char how[80];
+                if (ch < DBL_MAX) {
+                    (void)snprintf(how, sizeof how, "which moves the profile by %.2g (more than %g)", ch,
+                                   MDR_HOST_F32_SHAPE_MAX);
+                } else {
+                    (void)snprintf(how, sizeof how, "outside the profile's range");
+                }
+                return usage_errf("%s %.15g: f32 rounds it to %.9g, %s: --arith f64%s", profiles[A->pi].flags[k],
+                                  A->p[k], (double)(float)A->p[k], how,
+                                  A->kind == MDR_PROFILE_CONE ? ", or the cone as --profile powerlaw --C tan(theta) --n 1"
+                                                              : "");
+            }
+        }
+    }
     {
         CLI_T p[3] = {(CLI_T)A->p[0], (CLI_T)A->p[1], (CLI_T)A->p[2]};
         st = CLI_SFX(mdr_contact_init)(c, A->kind, p, (CLI_T)A->E, (CLI_T)A->w);

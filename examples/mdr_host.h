@@ -34,6 +34,69 @@ static inline double mdr_host_path_value(const double *path, long steps, long se
     return j == steps ? path[seg + 1] : path[seg] + (path[seg + 1] - path[seg]) * (double)j / (double)steps;
 }
 
+/** Above this change of its coefficients (relative), f32's rounding of a
+ *  profile's parameters is refused (mdr_host_f32_shape_change()): the
+ *  cone's critical F moves 3 times the change of tan(theta), a twice, d
+ *  once (measured in f64, theta = 1.4), so with f32's own error (5.2e-7
+ *  for the cone's critical state, docs/accuracy.md) a critical state stays
+ *  within f32's goal for them, 2e-6. The rounding of theta (up to 6e-8
+ *  rad) reaches it only past theta ~ 1.45 (sin theta cos theta < 0.12): a
+ *  half-angle under 7 degrees. */
+#define MDR_HOST_F32_SHAPE_MAX 5e-7
+
+/**
+ * @brief How far rounding a profile's parameters to float moves the
+ *        profile: the largest relative change of its derived coefficients
+ *        (the contact's k[], its shape: the cone's (pi/2) tan(theta)),
+ *        between the parameters p and p rounded to float, both in f64.
+ *        Every profile follows its parameters to about their rounding
+ *        (6e-8) except the cone near pi/2: its tan(theta) changes by
+ *        |dtheta| / (sin theta cos theta), and f32's rounding of theta by up
+ *        to 6e-8 rad made `mdr critical --profile cone --theta 1.5707962
+ *        --arith f32` answer a 2.8 times f64's, status ok (helper-37, stop
+ *        59). The host's f32 callers (the CLI, the Python package) refuse
+ *        a change beyond MDR_HOST_F32_SHAPE_MAX (mdr_host_f32_shape_refused).
+ * @param kind  an analytic profile (MDR_PROFILE_*, not MDR_PROFILE_TABLE)
+ * @param p     its parameters in double
+ * @return the change; 0 where p is beyond float or the f64 contact
+ *         refuses it (the f32 input checks and init name those); HUGE (DBL_MAX) where it accepts p
+ *         and refuses p rounded (theta rounded up to pi/2)
+ */
+static inline double mdr_host_f32_shape_change(uint8_t kind, const double p[3])
+{
+    mdr_contact_f64 c, r;
+    double q[3], m = 0.0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        if (!(p[i] >= -(double)FLT_MAX && p[i] <= (double)FLT_MAX)) {
+            return 0.0; /* (beyond float or NaN: the f32 input checks' case) */
+        }
+        q[i] = (double)(float)p[i];
+    }
+    if (mdr_contact_init_f64(&c, kind, p, 1.0, 0.0) != MDR_OK) {
+        return 0.0;
+    }
+    if (mdr_contact_init_f64(&r, kind, q, 1.0, 0.0) != MDR_OK) {
+        return DBL_MAX;
+    }
+    for (i = 0; i < 3; i++) {
+        const double e = c.k[i] != 0.0 ? (r.k[i] - c.k[i]) / c.k[i] : 0.0;
+        m = e > m ? e : -e > m ? -e : m;
+    }
+    return m;
+}
+
+/**
+ * @brief Whether the host's f32 callers refuse the profile p: rounded to
+ *        float it moves by more than MDR_HOST_F32_SHAPE_MAX
+ *        (mdr_host_f32_shape_change(), written to *change).
+ */
+static inline int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], double *change)
+{
+    *change = mdr_host_f32_shape_change(kind, p);
+    return *change > MDR_HOST_F32_SHAPE_MAX;
+}
+
 /** The q31 engine with its table and the SI units of its Q formats, in
  *  double (from L + L_lo, D0, Z0 and F0 = 2 E* L D0). */
 typedef struct {

@@ -719,5 +719,48 @@ fi
 refuse '^mdr: --output and --header name the same file' table --profile paraboloid --R 1e-3 --a-max 1e-4 \
     --header "$TMP/same.h" --output "$TMP/same.h"
 
+# f32's rounding of the cone's theta near pi/2 (helper-37, stop 59: --theta
+# 1.5707962 answered a 2.8 times f64's, exit 0): over pi/2 - theta = 1 ..
+# 3e-8 every f32 answer (a, d, F of the load- and grips-controlled critical
+# states) within 2e-6 of f64's (f32's goal for critical states), or refused
+# with the rounding named; theta that float holds exactly (k/2^20) answered
+# and within 2e-6 as well
+cone_f32() { # cone_f32 THETA CONTROL -> "accepted" (within 2e-6 of f64), "refused" or a failure
+    local o f e k x y
+    o=$($MDR critical --profile cone --theta "$1" --E 1e9 --w 0.05 --control "$2" 2>&1)
+    e=$?
+    if [ $e -eq 2 ] && printf '%s' "$o" | grep -q "^mdr: --theta $1: f32 rounds it to [0-9.]*, .*--arith f64"; then
+        echo refused
+        return
+    fi
+    [ $e -eq 0 ] || { echo "exit $e: $o"; return; }
+    f=$($MDR critical --profile cone --theta "$1" --E 1e9 --w 0.05 --control "$2" --arith f64) || { echo "f64 failed"; return; }
+    for k in a d F; do
+        x=$(printf '%s' "$o" | grep -o "\"$k\": [-0-9.e+]*" | head -1)
+        y=$(printf '%s' "$f" | grep -o "\"$k\": [-0-9.e+]*" | head -1)
+        [ -n "${x#*: }" ] && [ -n "${y#*: }" ] && near "${x#*: }" "${y#*: }" 2e-6 || { echo "$x vs f64 $y"; return; }
+    done
+    echo accepted
+}
+nacc=0
+nref=0
+for i in $(seq 0 50); do
+    th=$(awk -v i="$i" 'BEGIN { printf "%.10g", 1.5707963267948966 - 10^(-7.5 * i / 50) }')
+    for ctl in load grips; do
+        r=$(cone_f32 "$th" $ctl)
+        case $r in
+        accepted) nacc=$((nacc + 1)); ok ;;
+        refused) nref=$((nref + 1)); ok ;;
+        *) bad "cone --theta $th --control $ctl in f32: $r" ;;
+        esac
+    done
+done
+[ $nacc -gt 10 ] && [ $nref -gt 10 ] && ok || bad "cone near pi/2: $nacc accepted, $nref refused"
+for k in 1646592 1647000 1647099; do
+    th=$(awk -v k="$k" 'BEGIN { printf "%.17g", k / 1048576 }')
+    r=$(cone_f32 "$th" load)
+    [ "$r" = accepted ] && ok || bad "cone --theta $th (exact in float) in f32: $r"
+done
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -88,6 +88,22 @@ def narrow(arith, where, **values):
     return out
 
 
+def f32_shape(kind, p, names, where):
+    """Refuse (mdr.Error, MDR_E_PARAM) a profile that f32's rounding of its
+    parameters p moves beyond f32's accuracy: the cone near pi/2, where
+    theta rounded to float changes tan(theta) by |dtheta|/(sin cos); the
+    same test as the CLI's (mdr_host_f32_shape_refused, examples/mdr_host.h;
+    helper-37, stop 59: theta = 1.5707962 answered a 2.8 times f64's)."""
+    ch = ffi.new("double *")
+    if lib.mdr_host_f32_shape_refused(kind, [float(v) for v in p], ch):
+        for n, v in zip(names, p):
+            if float(np.float32(v)) != v:
+                raise Error(lib.MDR_E_PARAM, "%s: %s = %.15g: f32 rounds it to %.9g, %s; use arith='f64'%s" % (
+                    where, n, v, np.float32(v),
+                    "which moves the profile by %.2g" % ch[0] if ch[0] < 1e300 else "outside the profile's range",
+                    ", or the cone as Contact('powerlaw', C=tan(theta), n=1)" if kind == lib.MDR_PROFILE_CONE else ""))
+
+
 def control_code(control, where):
     try:
         return CONTROLS[control]

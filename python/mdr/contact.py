@@ -8,8 +8,8 @@ import types
 
 import numpy as np
 
-from ._core import (Error, broadcast, check, control_code, dptr, element_error, ffi, lib, narrow, real_array, shaped,
-                    shaped_bool)
+from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_shape, ffi, lib, narrow, real_array,
+                    shaped, shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -121,6 +121,8 @@ class Contact:
         p = [self.params[n] for n in names] + [0.0] * (3 - len(names))
         self.p = tuple(p)
         self.r = self.f = None
+        if arith == "f32":
+            f32_shape(kind, p, names, "Contact(%r)" % profile)
         check(self._f["mdr_contact_init"](self._c, kind, p, self.E, self.w),
               "Contact(%r, %s)" % (profile, self._args()))
         self._frozen = True

@@ -9,7 +9,7 @@ import collections
 
 import numpy as np
 
-from ._core import ARITHS, Error, check, control_code, dptr, event_name, ffi, lib, narrow, real_array
+from ._core import ARITHS, Error, check, control_code, dptr, event_name, f32_shape, ffi, lib, narrow, real_array
 from .contact import Contact
 
 #: one event of a run (MDR_EV_*): kind ("contact", "jump-in", "jump",
@@ -79,6 +79,8 @@ class Engine:
         if not isinstance(contact, Contact):
             raise TypeError("Engine(contact): an mdr.Contact (a sampled tip: Engine.from_tip(r, f, ...))")
         self._setup(contact.E, contact.w, springs, w_adv, k_machine, arith)
+        if arith == "f32" and contact.profile != "table":
+            f32_shape(contact.kind, contact.p, list(contact.params), "Engine(arith='f32')")
         self.contact = contact
         self.tip = None
         self.a_max = None

@@ -300,6 +300,39 @@ def test_vector_equals_scalar(arith, profile, params):
     assert all(c.equivalent(float(x)).G == G for x, G in zip(a.ravel(), p.G))
 
 
+def test_f32_cone_near_half_pi():
+    """f32's rounding of the cone's theta near pi/2 (f = tan(theta) r):
+    theta = 1.5707962 became 1.57079625 in float, tan(theta) 0.68 off, and
+    the critical state 2.8 times f64's, no error (helper-37, stop 59). Over
+    pi/2 - theta = 1 ... 3e-8 an f32 Contact's critical states (load,
+    grips) are within REL32 of f64's at the same theta, or the Contact (and
+    an f32 Engine of the f64 Contact) is refused, MDR_E_PARAM, naming the
+    rounding; theta that float holds exactly (k/2^20) is answered."""
+    n_ok = n_no = 0
+    for i in range(51):
+        th = math.pi / 2 - 10 ** (-7.5 * i / 50)
+        c64 = mdr.Contact("cone", theta=th, E=1e9, w=0.05)
+        try:
+            c32 = mdr.Contact("cone", theta=th, E=1e9, w=0.05, arith="f32")
+        except mdr.Error as e:
+            assert e.status == "MDR_E_PARAM" and "f32 rounds it to" in str(e), str(e)
+            with pytest.raises(mdr.Error, match="f32 rounds it to"):
+                mdr.Engine(c64, arith="f32")
+            n_no += 1
+            continue
+        for ctl in ("load", "grips"):
+            s32, s64 = c32.critical(ctl), c64.critical(ctl)
+            for k in ("a", "d", "F"):
+                assert within(rel(getattr(s32, k), getattr(s64, k)), REL32), (th, ctl, k)
+        n_ok += 1
+    assert n_ok > 10 and n_no > 10, (n_ok, n_no)
+    for k in (1646592, 1647000, 1647099):
+        th = k / 2 ** 20
+        c32 = mdr.Contact("cone", theta=th, E=1e9, w=0.05, arith="f32")
+        assert within(rel(c32.critical("load").F, mdr.Contact("cone", theta=th, E=1e9, w=0.05).critical("load").F),
+                      REL32)
+
+
 @pytest.mark.parametrize("profile,params", ALL_PROFILES)
 def test_f32_follows_f64(profile, params):
     """The f32 contact computes what the f64 one does, to float precision
