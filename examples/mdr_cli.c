@@ -135,6 +135,19 @@ static const char *num_problem(const char *s)
     return under ? "a nonzero number below double's range (it underflows to 0)" : "not a finite number";
 }
 
+/* A subnormal double (nonzero, below DBL_MIN): it holds fewer than 17
+ * digits (1e-310 is read as 9.9999999999999694e-311) and, as a physical
+ * input, takes the library outside the range it computes in (--E 1e-310
+ * made w/E* overflow and the line blamed --w; --w and --a 1e-310 ran with
+ * exit 0 on numbers that had lost digits). Refused for every value given
+ * in any arithmetic (f32 refuses more: outside_f32). */
+static int is_subnormal(double v)
+{
+    const double m = v < 0 ? -v : v;
+    return m != 0.0 && m < DBL_MIN;
+}
+#define SUBNORMAL_WHY "a subnormal number (nonzero, below double's normal range 2.2250738585072014e-308: it loses digits); give 0 or a value of larger magnitude"
+
 /* "V1,V2,..." -> malloc'd array of finite numbers: the count, 0 out of
  * memory, or -(1 + i) when value i (from 0) is not a finite number */
 static long parse_list(const char *s, double **out)
@@ -944,6 +957,9 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
             if (!parse_num(v, &vals[nflag])) {
                 return usage_errf("%s: %s: %s", f, num_problem(v), v);
             }
+            if (is_subnormal(vals[nflag])) {
+                return usage_errf("%s: %s: %s", f, SUBNORMAL_WHY, v);
+            }
             nflag++;
         }
     }
@@ -957,6 +973,11 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
         }
         if (A->npath < 2) {
             return usage_error("--path takes two or more numbers V1,V2,...", path_arg);
+        }
+        for (i = 0; i < A->npath; i++) {
+            if (is_subnormal(A->path[i])) {
+                return usage_errf("--path: value %ld (%.17g) is %s", (long)i + 1, A->path[i], SUBNORMAL_WHY);
+            }
         }
     }
     if (profile == NULL) {

@@ -87,10 +87,14 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
                                    profiles[A->pi].flags[k]);
                 }
                 (void)snprintf(what + strlen(what), sizeof what - strlen(what), ")");
+            } else if (CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)A->E, (CLI_T)0) != MDR_OK) {
+                (void)snprintf(what, sizeof what, "--E");
+            } else if (CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)1, (CLI_T)A->w) != MDR_OK) {
+                (void)snprintf(what, sizeof what, "--w");
             } else {
-                (void)snprintf(what, sizeof what, "%s",
-                               CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)A->E, (CLI_T)0) != MDR_OK ? "--E"
-                                                                                                  : "--w");
+                /* each valid alone: their ratio, the adhesion length's
+                 * w/E*, is beyond the arithmetic (it named --w alone) */
+                (void)snprintf(what, sizeof what, "--E/--w (w/E* beyond this arithmetic: w %.3g, E* %.3g)", A->w, A->E);
             }
             return cli_fail(what, st);
         }

@@ -387,6 +387,24 @@ for arith in f32 f64; do
 done
 refuse "^mdr: --path: value 2 is not a finite number" cycle $P --control grips --path 0,1e-400,0 \
     --steps-per-segment 4 --a-max 2e-6
+# a subnormal double is refused where it is given, naming its flag, in
+# every arithmetic and command (--E 1e-310 blamed --w; --w, --a 1e-310 ran
+# with exit 0 on values that had lost digits; an attack after stop 59)
+for arith in f32 f64; do
+    refuse "^mdr: --E: a subnormal number .*: 1e-310$" eq --profile paraboloid --R 10e-6 --E 1e-310 --w 0.05 --a 2e-6 --arith $arith
+    refuse "^mdr: --E: a subnormal number" cycle --profile paraboloid --R 10e-6 --E 1e-310 --w 0.05 --control grips \
+        --path 0,1e-7,-1e-7 --steps-per-segment 4 --arith $arith
+    refuse "^mdr: --w: a subnormal number .*: 1e-310$" eq --profile paraboloid --R 10e-6 --E 1e6 --w 1e-310 --a 2e-6 --arith $arith
+    refuse "^mdr: --a: a subnormal number .*: -1e-310$" eq $P --a -1e-310 --arith $arith
+    refuse "^mdr: --R: a subnormal number" critical --profile paraboloid --R 4e-320 --E 1e6 --w 0.05 --control load --arith $arith
+    refuse "^mdr: --path: value 2 \(.*\) is a subnormal number" cycle $P --control grips --path 0,1e-310,0 \
+        --steps-per-segment 4 --a-max 2e-6 --arith $arith
+    refuse "^mdr: --k-machine: a subnormal number" fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 \
+        --k-machine 1e-310 --arith $arith
+done
+# each valid alone, w/E* beyond the arithmetic: both named (it named --w)
+refuse "^mdr: --E/--w \(w/E\* beyond this arithmetic" eq --profile paraboloid --R 10e-6 --E 1e-300 --w 1e10 --a 2e-6 --arith f64
+refuse "^mdr: --E/--w \(w/E\* beyond this arithmetic" eq --profile paraboloid --R 10e-6 --E 1e-30 --w 1e10 --a 2e-6
 
 # every number checked before it is used, in every arithmetic
 for arith in f32 f64; do
@@ -415,13 +433,14 @@ for arith in f32 f64 q31; do
 done
 refuse '^mdr: --path segment 1 .*overflows' cycle $P --control grips --path -1e303,1e303 --steps-per-segment 1e6 --arith f64
 # in f32 a value float cannot hold is refused where it is given, not at step 0
-refuse '^mdr: --k-machine 1e-308: outside the range of --arith f32' critical $P --control machine --k-machine 1e-308
-refuse '^mdr: --k-machine .*outside the range of --arith f32' cycle $P --control machine --k-machine 1e-308 --path 0,1e-7 --steps-per-segment 4
+# (1e-300: a double below float; 1e-308, subnormal in double, is refused as such above)
+refuse '^mdr: --k-machine 1e-300: outside the range of --arith f32' critical $P --control machine --k-machine 1e-300
+refuse '^mdr: --k-machine .*outside the range of --arith f32' cycle $P --control machine --k-machine 1e-300 --path 0,1e-7 --steps-per-segment 4
 refuse '^mdr: --E 1e\+39: outside the range of --arith f32' eq --profile paraboloid --R 10e-6 --E 1e39 --w 0.05 --a 1e-6
 refuse '^mdr: --path value 2 .*outside the range of --arith f32' cycle $P --control load --path 0,1e39 --steps-per-segment 4
 refuse '^mdr: --R 1e-40: outside the range of --arith f32' fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-40 --k-machine 1 --arith f32
-out=$($MDR critical $P --control machine --k-machine 1e-308 --arith f64 2>&1)
-[ $? -ne 2 ] || printf '%s' "$out" | grep -vq 'outside the range' && ok || bad "1e-308 is a double: not refused for range in f64: $out"
+out=$($MDR critical $P --control machine --k-machine 1e-300 --arith f64 2>&1)
+[ $? -ne 2 ] || printf '%s' "$out" | grep -vq 'outside the range' && ok || bad "1e-300 is a double: not refused for range in f64: $out"
 # q31: a path value beyond the input range (+-2 units) is refused, by value and range
 refuse '^mdr: --path value 2 \(0.001 m\): outside the q31 input range \+-2 D0 = \+-[0-9.e-]+ m' cycle $P \
     --control grips --path 0,1e-3 --a-max 2e-6 --steps-per-segment 4 --arith q31
