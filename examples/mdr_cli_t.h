@@ -455,15 +455,13 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         /* a nonzero vertex that rounds to 0 LSB: a cycle the q31 engine
          * never makes (a path to 2e-12 N under load gave no event, every
          * row 0, exit 0; helper-37, stop 59) */
-        for (seg = 0; seg < A->npath; seg++) {
-            int32_t raw;
-            if (A->path[seg] != 0.0 && mdr_host_q31_raw(A->path[seg], unit, &raw) == MDR_OK && raw == 0) {
-                free(qnodes);
-                free(nodes);
-                return usage_errf("--path value %ld (%.9g %s): below half a q31 LSB of %s (one LSB: %.9g %s), it "
-                                  "rounds to 0; --arith f32",
-                                  seg + 1, A->path[seg], si, un, unit / 536870912.0, si);
-            }
+        seg = mdr_host_q31_lost(A->path, A->npath, unit); /* (shared with the Python package) */
+        if (seg >= 0) {
+            free(qnodes);
+            free(nodes);
+            return usage_errf("--path value %ld (%.9g %s): below half a q31 LSB of %s (one LSB: %.9g %s), it "
+                              "rounds to 0; --arith f32",
+                              seg + 1, A->path[seg], si, un, unit / 536870912.0, si);
         }
     }
     if (A->summary != NULL) {

@@ -200,6 +200,30 @@ static inline mdr_status mdr_host_q31_path(const double *path, long npath, long 
 }
 
 /**
+ * @brief The first nonzero vertex of a path that the q31 conversion
+ *        (mdr_host_q31_raw()) rounds to 0 LSB of unit: below half an LSB,
+ *        a cycle the q31 engine never makes (a path to 2e-12 N under load
+ *        gave no event and every row 0, with exit 0 in the CLI, helper-37
+ *        at stop 59; and in Python's q31 Engine.run, found after it).
+ *        Ticks between vertices may round to 0 (they pass near 0); a
+ *        vertex is what the user asked for. `mdr cycle --arith q31` and
+ *        Python's Engine.run (q31) refuse the path with this one check.
+ * @param unit  D0, F0 or Z0 of the engine (mdr_host_q31_unit()), > 0
+ * @return the vertex's index (0-based), or -1 if none
+ */
+static inline long mdr_host_q31_lost(const double *path, long npath, double unit)
+{
+    long s;
+    for (s = 0; s < npath; s++) {
+        int32_t raw;
+        if (path[s] != 0.0 && mdr_host_q31_raw(path[s], unit, &raw) == MDR_OK && raw == 0) {
+            return s;
+        }
+    }
+    return -1;
+}
+
+/**
  * @brief One tick of the q31 engine in SI: the controlled value v [m or N]
  *        converted to raw, the step, its outputs converted to SI in double.
  * @param control  MDR_CONTROL_GRIPS (v = d), _LOAD (v = F), else z (machine)

@@ -227,10 +227,17 @@ class Engine:
         bad = ffi.new("size_t *")
         st = lib.mdrpy_check_path(self._x if self._x is not None else ffi.NULL, ctl, pp, path.size, bad)
         if st != lib.MDR_OK:
-            raise Error(st, "Engine.run: path[%d] = %.9g" % (bad[0], path[bad[0]]), index=int(bad[0]),
-                        value=float(path[bad[0]]),
-                        hint="q31 takes |value| <= 2 units of %(D0).3g m (d), %(F0).3g N (F), %(Z0).3g m (z)"
-                        % self.q31_units if st == lib.MDR_E_OVERFLOW and self.arith == "q31" else "")
+            v = float(path[bad[0]])
+            hint = ""
+            if st == lib.MDR_E_OVERFLOW and self.arith == "q31":
+                u = self.q31_units
+                unit = u["D0"] if ctl == lib.MDR_CONTROL_GRIPS else u["F0"] if ctl == lib.MDR_CONTROL_LOAD else u["Z0"]
+                if abs(v) <= 2 * unit:  # in range: it rounds to 0 LSB (mdr_host_q31_lost, as `mdr cycle`)
+                    hint = ("below half a q31 LSB (%.3g) of its unit: it rounds to 0, a cycle the q31 engine never "
+                            "makes; use f32 or f64" % (unit / 2**29))
+                else:
+                    hint = "q31 takes |value| <= 2 units of %(D0).3g m (d), %(F0).3g N (F), %(Z0).3g m (z)" % u
+            raise Error(st, "Engine.run: path[%d] = %.9g" % (bad[0], v), index=int(bad[0]), value=v, hint=hint)
 
     def run(self, path, *, control, steps_per_segment):
         """Drive the engine along the piecewise-linear path of the controlled

@@ -211,6 +211,15 @@ mdr_status mdrpy_check_path(const mdrpy_engine *x, uint8_t control, const double
             return st;
         }
     }
+    if (x != NULL && x->arith == MDRPY_Q31) {
+        /* a nonzero vertex that rounds to 0 LSB: the check of `mdr cycle`
+         * (mdr_host_q31_lost()); it ran as a silent zero here */
+        const long k = mdr_host_q31_lost(path, (long)npath, mdr_host_q31_unit(&x->q, control));
+        if (k >= 0) {
+            *bad = (size_t)k;
+            return MDR_E_OVERFLOW;
+        }
+    }
     return MDR_OK;
 }
 

@@ -186,7 +186,9 @@ void mdrpy_engine_info(const mdrpy_engine *x, mdrpy_info *o);
  *        Z0). x NULL: finiteness only (before the engine is built).
  * @param[out] bad  index of the first refused value
  * @return MDR_OK, MDR_E_CONTROL (control not MDR_CONTROL_*), MDR_E_NONFINITE,
- *         MDR_E_OVERFLOW (f32: beyond float; q31: beyond the range)
+ *         MDR_E_OVERFLOW (f32: beyond float; q31: beyond the range, or a
+ *         nonzero vertex below half an LSB, which rounds to 0:
+ *         mdr_host_q31_lost(), as `mdr cycle --arith q31`)
  */
 mdr_status mdrpy_check_path(const mdrpy_engine *x, uint8_t control, const double *path,
                             size_t npath, size_t *bad);

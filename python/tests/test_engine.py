@@ -394,3 +394,25 @@ def test_default_extent_named_from_the_path():
     e = mdr.Engine(mdr.Contact("paraboloid", E=1e6, w=0.05, R=10e-6))
     with pytest.raises(mdr.Error, match="chosen from the run's path, whose largest value is 1e\\+300"):
         e.run([0, 1e300], control="grips", steps_per_segment=3)
+
+
+def test_q31_vertex_below_half_lsb_refused():
+    """A nonzero path vertex below half a q31 LSB of its unit rounds to 0: a
+    cycle the q31 engine never makes (no event, every tick 0). `mdr cycle`
+    refused it (helper-37, stop 59); Engine.run took it as a silent zero.
+    Both now refuse it with the same check (mdr_host_q31_lost, mdr_host.h),
+    on a first run and on an engine already built."""
+    c = mdr.Contact("paraboloid", E=1e6, w=0.05, R=1e-3)
+    e = mdr.Engine(c, w_adv=0.05, arith="q31")
+    with pytest.raises(mdr.Error) as err:
+        e.run([0, 2e-12, -1e-3], control="load", steps_per_segment=10)
+    assert err.value.status == "MDR_E_OVERFLOW" and err.value.index == 1 and err.value.value == 2e-12
+    assert "rounds to 0" in str(err.value) and "path[1]" in str(err.value)
+    unit = e.q31_units["F0"]
+    with pytest.raises(mdr.Error, match="rounds to 0") as err:
+        e.run([0, -0.4 * unit / 2**29], control="load", steps_per_segment=4)
+    assert err.value.index == 1
+    run = e.run([0, 0.6 * unit / 2**29, 0], control="load", steps_per_segment=4)  # 1 LSB: taken
+    assert len(run.F) == 9
+    f64 = mdr.Engine(c, w_adv=0.05, arith="f64").run([0, 2e-12, -1e-3], control="load", steps_per_segment=10)
+    assert f64.events  # the cycle the q31 path lost
