@@ -281,9 +281,20 @@ static long load_tip(const char *file, double **r, double **f, double **s, long 
             (void)usage_errf("%s:%ld: not a finite number", file, (*lines)[k]);
             return -1;
         }
+        if (is_subnormal((*r)[k]) || is_subnormal((*f)[k])) {
+            (void)usage_errf("%s:%ld: %s", file, (*lines)[k], SUBNORMAL_WHY);
+            return -1;
+        }
         if (k > 0 && !((*r)[k] > (*r)[k - 1])) {
             (void)usage_errf("%s:%ld: r must increase strictly (r = %.17g after %.17g)", file, (*lines)[k],
                              (*r)[k], (*r)[k - 1]);
+            return -1;
+        }
+        if (k > 0 && (*f)[k] < (*f)[k - 1]) {
+            /* the gap of a tip grows (or stays) with r; one that falls was
+             * taken with exit 0 (an attack after stop 59) */
+            (void)usage_errf("%s:%ld: f must not decrease with r (f = %.17g after %.17g): the gap of a tip "
+                             "grows with the radius", file, (*lines)[k], (*f)[k], (*f)[k - 1]);
             return -1;
         }
     }

@@ -380,6 +380,17 @@ refuse 'two.csv: 2 points; a tip needs at least 3 rows' table --profile table --
 printf 'r,f\n' > "$TMP/zero.csv"
 refuse 'zero.csv: 0 points; a tip needs at least 3 rows' eq --profile table --file "$TMP/zero.csv" --E 1e6 \
     --w 0.05 --a 5e-8
+# a tip whose f falls with r (a gap decreasing with the radius) is refused
+# by its line, in every command that reads a tip (it was taken, exit 0; an
+# attack after stop 59); f equal to the one before (a flat) is taken
+printf 'r,f\n0,0\n1e-7,1e-9\n# dip\n2e-7,0.5e-9\n3e-7,9e-9\n' > "$TMP/dip.csv"
+for cmd in "eq --a 1e-7 --E 1e6 --w 0.05" "table --springs 16" "fit --curve $TMP/tip.csv --k-machine 1"; do
+    refuse "dip.csv:5: f must not decrease with r \(f = 5[0-9.]*e-10 after 1[0-9.]*e-09\)" $cmd --profile table --file "$TMP/dip.csv"
+done
+printf 'r,f\n0,0\n1e-7,0\n2e-7,1e-9\n' > "$TMP/flat0.csv"
+$MDR table --profile table --file "$TMP/flat0.csv" --springs 16 >/dev/null && ok || bad "a tip with a flat (f equal) is taken"
+printf 'r,f\n0,0\n1e-7,1e-310\n2e-7,1e-9\n' > "$TMP/subn.csv"
+refuse "subn.csv:3: a subnormal number" table --profile table --file "$TMP/subn.csv" --springs 16
 # a nonzero number below double's range is refused, not read as 0: flags
 # and lists (helper-24, stop 56: --w 1e-400 ran with w = 0, exit 0)
 for arith in f32 f64; do
