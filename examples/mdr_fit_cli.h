@@ -939,7 +939,10 @@ static int fit_map_cmd(const struct fit_args *A)
     size_t chunk = (size_t)32 * (size_t)A->jobs, i;
     long n[2], total = 0;
     int cur = 0, rc = 0, tty = isatty(STDERR_FILENO), nth = 0, failed = 0, bad = 0;
-    unsigned long curves = 0;
+    unsigned long curves = 0, order_n = 0;
+    long order_line = 0;
+    int order_first = 0;
+    char order_label[128] = "";
     double t0 = fit_now();
     r.name = A->file;
     r.vmax = A->f64 ? DBL_MAX : (double)FLT_MAX;
@@ -977,7 +980,6 @@ static int fit_map_cmd(const struct fit_args *A)
     if (nth == 0) {
         rc = usage_error("cannot start a thread", NULL);
     }
-    printf("curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope\n");
     n[0] = rc == 0 ? fit_read_chunk(&r, &seen, &pd, buf[0], chunk, &bad) : 0;
     while (rc == 0 && n[cur] > 0) {
         fit_pool_submit(&P, buf[cur], (size_t)n[cur]);
@@ -985,9 +987,24 @@ static int fit_map_cmd(const struct fit_args *A)
          * a bad row: the curves before it are written, then exit 2) */
         n[1 - cur] = bad ? 0 : fit_read_chunk(&r, &seen, &pd, buf[1 - cur], chunk, &bad);
         fit_pool_wait(&P);
+        if (curves == 0) {
+            /* the header with the first rows: a map refused before any
+             * curve is read whole (a bad first row, no rows) leaves stdout
+             * empty (the header, then exit 2 before; an attack after
+             * stop 59) */
+            printf("curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope\n");
+        }
         for (i = 0; i < (size_t)n[cur]; i++) {
-            fit_map_row(&buf[cur][i], A->f64);
-            failed += buf[cur][i].res.st != MDR_OK;
+            const fit_curve *c = &buf[cur][i];
+            fit_map_row(c, A->f64);
+            failed += c->res.st != MDR_OK;
+            if (c->res.st == MDR_E_ORDER && order_n++ == 0 && c->n > 0) {
+                /* the first such curve, named by its line below */
+                order_line = fit_order_line(c);
+                order_first = order_line == 0;
+                order_line = order_line != 0 ? order_line : c->line[0];
+                (void)snprintf(order_label, sizeof order_label, "%s", c->label);
+            }
         }
         curves += (unsigned long)n[cur];
         if (tty) {
@@ -1025,6 +1042,17 @@ static int fit_map_cmd(const struct fit_args *A)
     (void)pthread_cond_destroy(&P.done);
     if (rc == 0 && curves == 0) {
         rc = usage_error("no curve,z,F rows in", A->file);
+    }
+    if (rc == 0 && order_n > 0) {
+        /* MDR_E_ORDER named by its line, as --curve names it (the row's
+         * status alone left the user searching the file): one line, the
+         * first such curve */
+        fprintf(stderr, "mdr: %s:%ld: curve %s%s (MDR_E_ORDER; %lu curve%s of the map so)\n", A->file, order_line,
+                order_label,
+                order_first ? " (its first row): samples not in time order, z not monotonic within a branch or "
+                              "rising to the last sample"
+                            : ": z increases within the retract (the part after the largest z)",
+                order_n, order_n == 1 ? "" : "s");
     }
     return rc != 0 ? rc : failed > 0;
 }

@@ -517,6 +517,22 @@ expect2 "z not monotonic" "order.csv:1301: z increases" fit --curve "$TMP/order.
 expect2 "curve not contiguous" "a1 appears again" fit --map "$TMP/again.csv" $TIP --k-machine 0.2
 printf 'curve,z,F\nx,1e-8\n' > "$TMP/map_two.csv"
 expect2 "map: two fields" "map_two.csv:2: expected three fields" fit --map "$TMP/map_two.csv" $TIP --k-machine 0.2
+# a map refused before any curve is read whole leaves stdout empty (the CSV
+# header was written, then exit 2; an attack after stop 59)
+printf 'curve,z,F\nx,1e-8,abc\n' > "$TMP/map_bad1.csv"
+printf 'curve,z,F\n' > "$TMP/map_none.csv"
+for m in map_two map_bad1 map_none; do
+    out=$("$MDR" fit --map "$TMP/$m.csv" $TIP --k-machine 0.2 2>/dev/null)
+    [ $? -eq 2 ] && [ -z "$out" ] && ok || bad "map $m refused: stdout not empty: $out"
+done
+# a map's MDR_E_ORDER curve named by its line on stderr (one line; the row's
+# status column alone before), exit 1, the rows as before
+awk 'NR == 1 { print "curve,z,F"; next } { print "o1," $0 }' "$TMP/order.csv" > "$TMP/map_order.csv"
+{ cat "$TMP/map.csv"; tail -n +2 "$TMP/map_order.csv"; } > "$TMP/map_order2.csv"
+res=$("$MDR" fit --map "$TMP/map_order2.csv" $TIP --k-machine 0.2 2>"$TMP/err")
+[ $? -eq 1 ] && [ "$(printf '%s\n' "$res" | tail -1)" = "o1,,,,,,,MDR_E_ORDER,,," ] && [ "$(wc -l <"$TMP/err")" -eq 1 ] &&
+    grep -q "map_order2.csv:$(( $(wc -l <"$TMP/map.csv") + 1300 )): curve o1: z increases within the retract" "$TMP/err" &&
+    ok || bad "map: MDR_E_ORDER named by its line: $(cat "$TMP/err") / $res"
 
 # every JSON object carries its units and echoes its inputs (issue 19);
 # --flag=value as --flag value
