@@ -1203,7 +1203,9 @@ int main(int argc, char **argv)
     }
     rc = cli_help(argc, argv);
     if (rc >= 0) {
-        return rc;
+        /* (the usage or version lost to /dev/full exited 0; an attack
+         * after stop 59) */
+        return rc == 0 ? stdout_written(0) : rc;
     }
     memset(&A, 0, sizeof A);
     A.springs = 1024;
@@ -1225,7 +1227,7 @@ int main(int argc, char **argv)
     rc = cli_collect(argc, argv, 2, NULL, kv, &nkv);
     if (rc == 3) {
         fputs(usage_cmd[A.cmd], stdout);
-        return 0;
+        return stdout_written(0);
     }
     if (rc == 0) {
         rc = parse_args(&A, kv, nkv);

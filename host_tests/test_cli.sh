@@ -745,6 +745,13 @@ if [ -w /dev/full ]; then
     $MDR cycle --profile paraboloid --R 1e-3 --E 1e6 --w 0.05 --control grips --path 0,1e-6,-3e-6 \
         --steps-per-segment 10 >/dev/null 2>/dev/full
     [ $? -eq 1 ] && ok || bad "cycle: the summary on stderr lost (/dev/full) exits 1"
+    # the usage and the version lost to /dev/full: exit 1, one line (exit 0
+    # before; an attack after stop 59)
+    for args in "--help" "-h" "help" "help cycle" "help help" "cycle --help" "eq --a 1 --help" "fit --help" "--version"; do
+        $MDR $args >/dev/full 2>"$TMP/err"
+        [ $? -eq 1 ] && [ "$(wc -l <"$TMP/err")" -eq 1 ] && grep -q '^mdr: stdout: ' "$TMP/err" && ok ||
+            bad "mdr $args >/dev/full: exit 1 and one line ($(cat "$TMP/err"))"
+    done
 fi
 refuse '^mdr: --output and --header name the same file' table --profile paraboloid --R 1e-3 --a-max 1e-4 \
     --header "$TMP/same.h" --output "$TMP/same.h"
