@@ -561,65 +561,72 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     }
     /* energy: Q15.48 of W0 = F0 D0 for q31 */
     dissipated = A->q31 ? mdr_host_q31_energy(&Q, Q.e.en.dissipated) : (double)eng.en.dissipated;
-    if (A->q31 && (Q.e.flags & MDR_FLAG_SAT)) {
+    if (A->q31 && (Q.e.flags & MDR_FLAG_SAT) && rc == 0) {
         /* saturated numbers are no results: exit 1 (it was 0 with this
-         * warning; helper-37, stop 59) */
+         * warning; helper-37, stop 59); after a failed step, that step's
+         * line alone */
         fprintf(stderr, "mdr: q31 inputs or results saturated (beyond +-2 units: D0 = %.9g m, "
                         "F0 = %.9g N)\n", Q.D0, Q.F0);
         rc = rc ? rc : 1;
     }
-    if (sum == NULL) {
-        json_begin(&js, stderr, CLI_F64);
+    /* the summary: in --summary FILE always (up to a failure); on stderr
+     * only for a run that succeeds, so that a failed run's stderr is its
+     * one line (the JSON followed it, two lines; an attack after stop 59) */
+    if (sum != NULL || rc == 0) {
+        if (sum == NULL) {
+            json_begin(&js, stderr, CLI_F64);
+        }
+        if (have_po) {
+            json_num(&js, "pull_off_F", po.F0);
+            json_num(&js, "pull_off_d", po.d0);
+        } else {
+            json_key(&js, "pull_off_F");
+            fputs("null", js.fp);
+            json_key(&js, "pull_off_d");
+            fputs("null", js.fp);
+        }
+        if (have_t) {
+            json_num(&js, "max_tensile_F", tF);
+            json_num(&js, "max_tensile_d", td);
+        } else {
+            json_key(&js, "max_tensile_F");
+            fputs("null", js.fp);
+            json_key(&js, "max_tensile_d");
+            fputs("null", js.fp);
+        }
+        json_key(&js, "events");
+        fprintf(js.fp, "%ld", events);
+        json_num(&js, "dissipated", dissipated);
+        json_key(&js, "cycles");
+        fprintf(js.fp, "%lu", (unsigned long)(A->q31 ? Q.e.en.cycles : eng.en.cycles));
+        json_key(&js, "jumps");
+        fprintf(js.fp, "%ld", jumps);
+        json_key(&js, "springs");
+        fprintf(js.fp, "%u", (unsigned)tab.n);
+        json_num(&js, "a_max", (double)(tab.h * (CLI_T)tab.n));
+        json_str(&js, "arith", A->q31 ? "q31" : CLI_NAME);
+        json_key(&js, "event_list");
+        fprintf(js.fp, "[%s]", list ? list : "");
+        /* the event objects' keys, for the units object */
+        json_key_only(&js, "a0");
+        json_key_only(&js, "d0");
+        json_key_only(&js, "F0");
+        json_key_only(&js, "a1");
+        json_key_only(&js, "d1");
+        json_key_only(&js, "F1");
+        json_end(&js, A);
     }
-    if (have_po) {
-        json_num(&js, "pull_off_F", po.F0);
-        json_num(&js, "pull_off_d", po.d0);
-    } else {
-        json_key(&js, "pull_off_F");
-        fputs("null", js.fp);
-        json_key(&js, "pull_off_d");
-        fputs("null", js.fp);
-    }
-    if (have_t) {
-        json_num(&js, "max_tensile_F", tF);
-        json_num(&js, "max_tensile_d", td);
-    } else {
-        json_key(&js, "max_tensile_F");
-        fputs("null", js.fp);
-        json_key(&js, "max_tensile_d");
-        fputs("null", js.fp);
-    }
-    json_key(&js, "events");
-    fprintf(js.fp, "%ld", events);
-    json_num(&js, "dissipated", dissipated);
-    json_key(&js, "cycles");
-    fprintf(js.fp, "%lu", (unsigned long)(A->q31 ? Q.e.en.cycles : eng.en.cycles));
-    json_key(&js, "jumps");
-    fprintf(js.fp, "%ld", jumps);
-    json_key(&js, "springs");
-    fprintf(js.fp, "%u", (unsigned)tab.n);
-    json_num(&js, "a_max", (double)(tab.h * (CLI_T)tab.n));
-    json_str(&js, "arith", A->q31 ? "q31" : CLI_NAME);
-    json_key(&js, "event_list");
-    fprintf(js.fp, "[%s]", list ? list : "");
-    /* the event objects' keys, for the units object */
-    json_key_only(&js, "a0");
-    json_key_only(&js, "d0");
-    json_key_only(&js, "F0");
-    json_key_only(&js, "a1");
-    json_key_only(&js, "d1");
-    json_key_only(&js, "F1");
-    json_end(&js, A);
     if (sum == NULL && (fflush(stderr) != 0 || ferror(stderr))) {
         rc = rc ? rc : 1; /* the summary on stderr lost (2>/dev/full: exit 0 before; helper-37, stop 59) */
     }
     if (sum != NULL) {
         const int werr = ferror(sum);
-        if (fclose(sum) != 0 || werr) {
+        if ((fclose(sum) != 0 || werr) && rc == 0) {
             /* the file took the first byte but not the rest (the disk filled
-             * during the run): a failure of the run, not a bad argument */
+             * during the run): a failure of the run, not a bad argument
+             * (after a failed step, that step's line alone) */
             (void)usage_sys("cannot write --summary", A->summary);
-            rc = rc ? rc : 1;
+            rc = 1;
         }
     }
     free(list);

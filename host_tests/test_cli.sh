@@ -183,6 +183,11 @@ grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad 
 # outside the table: exit 1 with a message
 $MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>&1
 [ $? -eq 1 ] && ok || bad "cycle beyond the table exits 1"
+# ... with one line on stderr, the step's (the JSON summary followed it: two
+# lines; an attack after stop 59)
+$MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>"$TMP/err"
+[ $? -eq 1 ] && [ "$(wc -l <"$TMP/err")" -eq 1 ] && grep -q '^mdr: step [0-9]* (value .*): .*raise --a-max$' "$TMP/err" &&
+    ok || bad "a failed cycle: one line on stderr ($(head -c 300 "$TMP/err"))"
 # bad arguments: exit 2, one line on stderr
 expect2() {
     local err
