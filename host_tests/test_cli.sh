@@ -183,6 +183,16 @@ grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad 
 # outside the table: exit 1 with a message
 $MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>&1
 [ $? -eq 1 ] && ok || bad "cycle beyond the table exits 1"
+# --k-machine under grips or load is taken (docs/engine.md: the CSV's z =
+# d + F/k_m, without it z = d), not ignored: kept, and said in mdr cycle
+# --help (an attack after stop 59 took it for ignored)
+$MDR cycle --help | tr '\n' ' ' | grep -q 'under grips or load it sets the CSV.s z = *d + F/K' && ok ||
+    bad "mdr cycle --help: what --k-machine does under grips or load"
+for ctl in grips load; do
+    $MDR cycle $P --control $ctl --path 0,0.5e-6,-0.6e-6 --steps-per-segment 4 --k-machine 10 --arith f64 2>/dev/null |
+        awk -F, 'NR > 1 { z = $3 + $4 / 10; d = z - $2; if (d < 0) d = -d; if (d > 1e-15 * (z < 0 ? -z : z) + 1e-30) bad = 1; n++ }
+                 END { exit bad || n != 9 }' && ok || bad "cycle --control $ctl --k-machine: z = d + F/k_m"
+done
 # ... with one line on stderr, the step's (the JSON summary followed it: two
 # lines; an attack after stop 59)
 $MDR cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --a-max 2e-6 >/dev/null 2>"$TMP/err"
