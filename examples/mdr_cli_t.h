@@ -49,7 +49,7 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
                                            buf);
         return st == MDR_OK ? 0 : cli_fail(st == MDR_E_PARAM ? "--E/--w" : A->file, st);
     }
-    if (sizeof(CLI_T) < sizeof(double)) {
+    if (!CLI_F64) {
         /* a profile that f32's rounding of its parameters moves beyond
          * f32's accuracy (the cone near pi/2: mdr_host_f32_shape_change) */
         double ch;
@@ -567,7 +567,7 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
          * line alone */
         fprintf(stderr, "mdr: q31 inputs or results saturated (beyond +-2 units: D0 = %.9g m, "
                         "F0 = %.9g N)\n", Q.D0, Q.F0);
-        rc = rc ? rc : 1;
+        rc = 1;
     }
     /* the summary: in --summary FILE always (up to a failure); on stderr
      * only for a run that succeeds, so that a failed run's stderr is its
