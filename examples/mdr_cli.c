@@ -10,6 +10,7 @@
  * Every JSON object carries "input" (the inputs it was computed from) and
  * "units" (the SI unit of each quantity key).
  */
+#include <ctype.h>
 #include <errno.h>
 #include <float.h>
 #include <stdarg.h>
@@ -47,10 +48,35 @@ struct cli_args {
     const char *name, *file, *summary, *header, *output;
 };
 
+/* one line on stderr, "mdr: " and the formatted message; returns 2. A
+ * value given with a line break in it (--E $'1e9\n') is echoed with the
+ * break written as \n, so that the message stays one line. */
+static int usage_errf(const char *fmt, ...)
+{
+    char buf[4096];
+    const char *c;
+    va_list ap;
+    va_start(ap, fmt);
+    (void)vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    fputs("mdr: ", stderr);
+    for (c = buf; *c; c++) {
+        const unsigned char ch = (unsigned char)*c;
+        if (ch == '\n' || ch == '\r') {
+            fputs(ch == '\n' ? "\\n" : "\\r", stderr);
+        } else if (ch < 0x20 && ch != '\t') {
+            fprintf(stderr, "\\x%02x", ch);
+        } else {
+            fputc(ch, stderr);
+        }
+    }
+    fputc('\n', stderr);
+    return 2;
+}
+
 static int usage_error(const char *msg, const char *what)
 {
-    fprintf(stderr, "mdr: %s%s%s\n", msg, what ? ": " : "", what ? what : "");
-    return 2;
+    return usage_errf("%s%s%s", msg, what ? ": " : "", what ? what : "");
 }
 
 /* A file that could not be opened, read or written: the line gives the
@@ -62,20 +88,7 @@ static int usage_sys(const char *msg, const char *what)
     if (e == 0) {
         return usage_error(msg, what);
     }
-    fprintf(stderr, "mdr: %s: %s (%s)\n", msg, what, strerror(e));
-    return 2;
-}
-
-/* one line on stderr, "mdr: " and the formatted message; returns 2 */
-static int usage_errf(const char *fmt, ...)
-{
-    va_list ap;
-    fputs("mdr: ", stderr);
-    va_start(ap, fmt);
-    (void)vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputc('\n', stderr);
-    return 2;
+    return usage_errf("%s: %s (%s)", msg, what, strerror(e));
 }
 
 /* a status's name (lib/include/mdr_types.h), as the Python package's
@@ -110,11 +123,13 @@ static int is_finite(double v)
 }
 
 /* a whole string as a finite number (strtod: decimal or hex; not nan, inf,
- * nor a nonzero number below double's normal range: tip_csv_strtod) */
+ * nor a nonzero number below double's normal range: tip_csv_strtod), with
+ * no white space around it (strtod skipped a leading one, a trailing one
+ * was "not a finite number": --E ' 1e9' ran, --E '1e9 ' was refused) */
 static int parse_num(const char *s, double *v)
 {
     char *end;
-    if (s == NULL || *s == '\0') {
+    if (s == NULL || *s == '\0' || isspace((unsigned char)*s)) {
         return 0;
     }
     *v = tip_csv_strtod(s, &end);
@@ -127,7 +142,11 @@ static const char *num_problem(const char *s)
 {
     char *end;
     const int e0 = errno;
+    const size_t len = strcspn(s, ",");
     double v;
+    if (len > 0 && (isspace((unsigned char)s[0]) || isspace((unsigned char)s[len - 1]))) {
+        return "white space around the number (give the number alone)";
+    }
     errno = 0;
     v = strtod(s, &end);
     const int under = end != s && errno == ERANGE && v == 0.0;
@@ -165,7 +184,7 @@ static long parse_list(const char *s, double **out)
     while (i < n) {
         char *end;
         v[i] = tip_csv_strtod(s, &end);
-        if (end == s || (*end != ',' && *end != '\0') || !is_finite(v[i])) {
+        if (end == s || (*end != ',' && *end != '\0') || !is_finite(v[i]) || isspace((unsigned char)*s)) {
             free(v);
             return -(1 + i);
         }
@@ -980,7 +999,14 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
     if (path_arg != NULL) {
         A->npath = parse_list(path_arg, &A->path);
         if (A->npath < 0) {
-            return usage_errf("--path: value %ld is not a finite number: %s", -A->npath, path_arg);
+            const char *val = path_arg; /* value -npath (from 1) */
+            long k;
+            for (k = 1; k < -A->npath; k++) {
+                val = strchr(val, ',') + 1;
+            }
+            /* (white space named as such; else the words of before) */
+            return usage_errf("--path: value %ld is %s: %s", -A->npath,
+                              num_problem(val)[0] == 'w' ? num_problem(val) : "not a finite number", path_arg);
         }
         if (A->npath == 0) {
             return usage_error("out of memory", NULL);

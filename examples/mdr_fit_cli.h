@@ -1185,7 +1185,7 @@ static int fit_main(int argc, char **argv)
             }
             return usage_errf("%s: not a flag of mdr fit (mdr fit --help)", f);
         } else if (!parse_num(v, &x)) {
-            return usage_errf("%s: not a finite number: %s", f, v);
+            return usage_errf("%s: %s: %s", f, num_problem(v), v);
         } else if (is_subnormal(x)) {
             return usage_errf("%s: %s: %s", f, SUBNORMAL_WHY, v);
         } else if (strcmp(f, "--k-machine") == 0) {

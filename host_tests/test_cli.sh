@@ -432,6 +432,23 @@ done
 refuse "^mdr: --E/--w \(w/E\* beyond this arithmetic" eq --profile paraboloid --R 10e-6 --E 1e-300 --w 1e10 --a 2e-6 --arith f64
 refuse "^mdr: --E/--w \(w/E\* beyond this arithmetic" eq --profile paraboloid --R 10e-6 --E 1e-30 --w 1e10 --a 2e-6
 
+# white space around a number is refused naming the flag, leading as
+# trailing (--E ' 1e9' ran, --E '1e9 ' was "not a finite number"; an attack
+# after stop 59), in --path values and in fit's flags too
+for v in ' 1e9' '1e9 ' $'\t1e9' $'1e9\n'; do
+    refuse "^mdr: --E: white space around the number \(give the number alone\): " eq --profile paraboloid --R 10e-6 \
+        --E "$v" --w 0.05 --a 2e-6
+done
+refuse "^mdr: --a: white space around the number" eq $P --a=' 2e-6' --arith f64
+refuse "^mdr: --path: value 2 is white space around the number" cycle $P --control grips --path '0, 1e-7,0' \
+    --steps-per-segment 4 --a-max 2e-6
+refuse "^mdr: --path: value 2 is white space around the number" cycle $P --control grips --path '0,1e-7 ,0' \
+    --steps-per-segment 4 --a-max 2e-6
+refuse "^mdr: --k-machine: white space around the number" fit --curve "$TMP/tip.csv" --profile paraboloid --R 1e-5 \
+    --k-machine ' 1'
+# a value with a line break is echoed with it escaped: the message stays one line
+refuse '^mdr: --E: not a finite number: 1e9\\nx$' eq --profile paraboloid --R 10e-6 --a 2e-6 --E $'1e9\nx' --w 0.05
+refuse '^mdr: unknown profile: a\\nb$' eq --profile $'a\nb' --E 1e6 --w 0.05 --a 1e-6
 # every number checked before it is used, in every arithmetic
 for arith in f32 f64; do
     for v in nan inf -inf 1e999 0x1p99999; do
