@@ -720,6 +720,25 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
             }
         }
         st = CLI_SFX(mdr_critical)(&c, A->control, (CLI_T)A->k_m, a0, &o);
+        if (st == MDR_E_RADIUS) {
+            /* which radius: --a-start itself, or the path from it to the
+             * pull-off leaving the profile's domain (a tip tabulated short
+             * of the pull-off radius); both said "critical: contact radius
+             * outside the profile's domain" (an attack after stop 59) */
+            CLI_SFX(mdr_eqstate) e;
+            if (A->have_a_start && (!(a0 > (CLI_T)0) || CLI_SFX(mdr_eq)(&c, a0, &e) == MDR_E_RADIUS)) {
+                return usage_errf("--a-start %.9g: outside the profile's domain (%s, status %d)", A->a_start,
+                                  cli_stname(st), (int)st);
+            }
+            if (A->kind == KIND_TABLE) {
+                return usage_errf("%s: the tip ends (its last sample r = %.9g m) before the pull-off: its contact "
+                                  "radius lies beyond; tabulate the tip further (%s, status %d)",
+                                  A->file, A->tr[A->ntab - 1], cli_stname(st), (int)st);
+            }
+            return usage_errf("--profile %s: the path to the pull-off leaves the profile's domain%s (%s, status %d)",
+                              profiles[A->pi].name, A->have_a_start ? " (from --a-start)" : "", cli_stname(st),
+                              (int)st);
+        }
         if (st != MDR_OK) {
             return cli_fail("critical", st);
         }

@@ -449,6 +449,18 @@ refuse "^mdr: --k-machine: white space around the number" fit --curve "$TMP/tip.
 # a value with a line break is echoed with it escaped: the message stays one line
 refuse '^mdr: --E: not a finite number: 1e9\\nx$' eq --profile paraboloid --R 10e-6 --a 2e-6 --E $'1e9\nx' --w 0.05
 refuse '^mdr: unknown profile: a\\nb$' eq --profile $'a\nb' --E 1e6 --w 0.05 --a 1e-6
+# a radius outside the domain named by the flag or file it came from (each
+# said "critical: contact radius outside the profile's domain"; an attack
+# after stop 59): --a-start itself, or a tip tabulated short of the pull-off
+for arith in f32 f64; do
+    refuse "^mdr: --a-start -1: outside the profile's domain \(MDR_E_RADIUS" critical $P --control load --a-start -1 --arith $arith
+    refuse "^mdr: --a-start 2e-06: outside the profile's domain" critical --profile sphere --R 1e-6 --E 1e6 --w 0.05 \
+        --control grips --a-start 2e-6 --arith $arith
+    refuse "^mdr: --a-start 0: outside the profile's domain" stress $P --control load --a-start 0 --r 0.5 --arith $arith
+    awk 'BEGIN { print "r,f"; for (i = 0; i <= 20; i++) { r = 1e-6 * i / 20; printf "%.17g,%.17g\n", r, r * r / 20e-6 } }' >"$TMP/short.csv"
+    refuse "short.csv: the tip ends \(its last sample r = 1e-06 m\) before the pull-off.*tabulate the tip further" \
+        critical --profile table --file "$TMP/short.csv" --E 1e6 --w 0.05 --control load --arith $arith
+done
 # every number checked before it is used, in every arithmetic
 for arith in f32 f64; do
     for v in nan inf -inf 1e999 0x1p99999; do
