@@ -304,21 +304,19 @@ static long load_tip(const char *file, double **r, double **f, double **s, long 
             (void)usage_errf("%s:%ld: %s", file, (*lines)[k], SUBNORMAL_WHY);
             return -1;
         }
-        if (k > 0 && !((*r)[k] > (*r)[k - 1])) {
-            (void)usage_errf("%s:%ld: r must increase strictly (r = %.17g after %.17g)", file, (*lines)[k],
-                             (*r)[k], (*r)[k - 1]);
-            return -1;
-        }
-        if (k > 0 && (*f)[k] < (*f)[k - 1]) {
-            /* the gap of a tip grows (or stays) with r; one that falls was
-             * taken with exit 0 (an attack after stop 59) */
-            (void)usage_errf("%s:%ld: f must not decrease with r (f = %.17g after %.17g): the gap of a tip "
-                             "grows with the radius", file, (*lines)[k], (*f)[k], (*f)[k - 1]);
-            return -1;
-        }
     }
-    (void)tip_slopes(*r, *f, n, *s); /* r increases: checked above */
-    return n;
+    switch (tip_slopes(*r, *f, n, *s, &k)) {
+    case -1:
+        (void)usage_errf("%s:%ld: r must increase strictly (r = %.17g after %.17g)", file, (*lines)[k], (*r)[k],
+                         (*r)[k - 1]);
+        return -1;
+    case -2: /* (taken with exit 0: an attack after stop 59) */
+        (void)usage_errf("%s:%ld: f must not decrease with r (f = %.17g after %.17g): the gap of a tip "
+                         "grows with the radius", file, (*lines)[k], (*f)[k], (*f)[k - 1]);
+        return -1;
+    default:
+        return n;
+    }
 }
 
 /* profile name -> kind and the flags of its parameters */

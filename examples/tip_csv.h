@@ -152,17 +152,34 @@ static inline long tip_csv_parse(const char *text, size_t len, double *r, double
  * that mdr_contact_init_table_*() takes, formed in double: the difference of
  * two heights keeps its digits here, not after a conversion to float (a
  * 1 m height offset on a 10 um sphere moved the f32 pull-off by 46 %).
- * Returns 0, or -1 (s partly written) when r does not increase strictly. */
-static inline int tip_slopes(const double *r, const double *f, long n, double *s)
+ * Returns 0; -1 where r does not increase strictly (s then partly
+ * written); -2 where f falls (f[j+1] < f[j]; equal heights, a flat, are
+ * taken), every slope written all the same (the library takes any slopes:
+ * the fuzzer's samples): the gap of a tip grows with the radius, and a dip
+ * is off MDR's disc of contact and, in the model, a fold the tip does not
+ * have (docs/profiles.md, "Tabulated tips"; a dip was taken by the CLI and
+ * the Python package, an attack after stop 59). *bad (if not NULL): the
+ * first sample j + 1 that breaks the rule. The CLI (load_tip) and the
+ * Python package (mdrpy_contact_tip) refuse through this one test. */
+static inline int tip_slopes(const double *r, const double *f, long n, double *s, long *bad)
 {
-    long j;
+    long j, fall = 0;
     for (j = 0; j + 1 < n; j++) {
         if (!(r[j + 1] > r[j])) {
+            if (bad != NULL) {
+                *bad = j + 1;
+            }
             return -1;
+        }
+        if (f[j + 1] < f[j] && fall == 0) {
+            fall = j + 1;
         }
         s[j] = (f[j + 1] - f[j]) / (r[j + 1] - r[j]);
     }
-    return 0;
+    if (fall != 0 && bad != NULL) {
+        *bad = fall;
+    }
+    return fall != 0 ? -2 : 0;
 }
 
 #endif /* TIP_CSV_H */

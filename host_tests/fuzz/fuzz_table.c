@@ -33,8 +33,8 @@ static void contact_checks(long m, double E, double w)
     mdr_contact_f32 cf;
     long i;
     mdr_status st;
-    if (tip_slopes(r, f, m, sl) != 0) {
-        return;
+    if (tip_slopes(r, f, m, sl, NULL) == -1) {
+        return; /* (a falling f, -2, the library takes: its slopes are all written) */
     }
     for (i = 0; i + 1 < m; i++) {
         sl32[i] = (float)sl[i];

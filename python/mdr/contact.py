@@ -286,4 +286,8 @@ def _table_hint(st, r, f):
         if bad.size:
             return "r not strictly increasing at sample %d (r = %.9g after %.9g)" % (bad[0] + 1, r[bad[0] + 1],
                                                                                     r[bad[0]])
+        bad = np.flatnonzero(np.diff(f) < 0)
+        if bad.size:
+            return "f falls at sample %d (f = %.9g after %.9g): the gap of a tip grows with the radius" % (
+                bad[0] + 1, f[bad[0] + 1], f[bad[0]])
     return ""

@@ -72,6 +72,23 @@ def test_contact_argument_errors():
         mdr.Contact("table", r=[0, 1e-6, 2e-6], **P)
 
 
+@pytest.mark.parametrize("arith", ["f64", "f32", "q31"])
+def test_tip_with_a_dip_refused(arith):
+    """A sampled tip whose f falls with r (a dip) is refused, MDR_E_TABLE,
+    naming the sample, by Contact and Engine.from_tip, as mdr refuses such
+    a file (one test: tip_slopes, examples/tip_csv.h; both took it before,
+    an attack after stop 59); equal heights (a flat) are taken."""
+    r = [0, 1e-7, 2e-7, 3e-7]
+    f = [0, 1e-9, 0.5e-9, 9e-9]
+    if arith != "q31":
+        e = refused("MDR_E_TABLE", mdr.Contact, "table", r=r, f=f, arith=arith, **P)
+        assert "f falls at sample 2 (f = 5e-10 after 1e-09)" in str(e), str(e)
+        mdr.Contact("table", r=r, f=[0, 0, 1e-9, 9e-9], arith=arith, **P)
+    refused("MDR_E_TABLE", mdr.Engine.from_tip, r, f, arith=arith, **P)
+    if arith != "q31":  # (q31: these 4 samples' table is beyond its Q formats, MDR_E_OVERFLOW)
+        mdr.Engine.from_tip(r, [0, 0, 1e-9, 9e-9], arith=arith, **P)
+
+
 @pytest.mark.parametrize("arith", ["f64", "f32"])
 def test_eq_refusals_name_the_element(arith):
     c = mdr.Contact("paraboloid", R=10e-6, arith=arith, **P)
