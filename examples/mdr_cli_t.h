@@ -635,6 +635,19 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     return rc;
 }
 
+/* An f32 answer refused for its inputs' rounding (mdr_host_f32_eq_change,
+ * change ch beyond MDR_HOST_F32_EQ_MAX): the option, its value, where */
+static int CLI_SFX(f32_refuse)(const char *opt, double v, double ch, const char *where)
+{
+    char how[80];
+    if (ch < DBL_MAX) {
+        (void)snprintf(how, sizeof how, "moves the state by %.2g (more than %g)", ch, MDR_HOST_F32_EQ_MAX);
+    } else {
+        (void)snprintf(how, sizeof how, "puts the state outside the profile");
+    }
+    return usage_errf("%s %.15g%s: f32's rounding of the inputs to float %s: --arith f64", opt, v, where, how);
+}
+
 /* eq, critical, curve and stress on the scene's contact */
 static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp)
 {
@@ -642,6 +655,14 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
     mdr_status st;
     if (A->cmd == CMD_EQ) {
         CLI_SFX(mdr_eqstate) e;
+        if (!CLI_F64 && A->kind != KIND_TABLE) {
+            /* a state that f32's rounding of its inputs moves beyond f32's
+             * accuracy (mdr_host_f32_eq_change: the sphere near a = R) */
+            const double ch = mdr_host_f32_eq_change(A->kind, A->p, A->E, A->w, A->a, A->have_d ? &A->d : NULL);
+            if (ch > MDR_HOST_F32_EQ_MAX) {
+                return CLI_SFX(f32_refuse)("--a", A->a, ch, "");
+            }
+        }
         st = CLI_SFX(mdr_eq)(&c, (CLI_T)A->a, &e);
         if (st != MDR_OK) {
             return cli_fail("--a", st);
@@ -698,6 +719,15 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
             for (i = 1; i <= A->n; i++) {
                 CLI_SFX(mdr_eqstate) e;
                 CLI_T a = (CLI_T)(A->a_max * (double)i / (double)A->n);
+                if (!CLI_F64 && A->kind != KIND_TABLE && pass == 0) {
+                    const double ch = mdr_host_f32_eq_change(A->kind, A->p, A->E, A->w,
+                                                             A->a_max * (double)i / (double)A->n, NULL);
+                    if (ch > MDR_HOST_F32_EQ_MAX) {
+                        char row[64];
+                        (void)snprintf(row, sizeof row, ", its row %ld (a = %.9g)", i, (double)a);
+                        return CLI_SFX(f32_refuse)("--a-max", A->a_max, ch, row);
+                    }
+                }
                 st = CLI_SFX(mdr_eq)(&c, a, &e);
                 if (st != MDR_OK) {
                     return cli_fail("--a-max", st);

@@ -34,6 +34,17 @@ static inline double mdr_host_path_value(const double *path, long steps, long se
     return j == steps ? path[seg + 1] : path[seg] + (path[seg + 1] - path[seg]) * (double)j / (double)steps;
 }
 
+/* v rounded to float in double (v finite within float's range), through
+ * a volatile float: GCC 12 -O2 folded (double)(float)v of a constant
+ * array's elements into v itself after mdr_host_f32_eq_change's range
+ * test (the flattened tip's b = 5e-5 kept its digits, and the check saw
+ * 4.8e-7 where the rounding moves the state 4.6e-6; -O0 saw it) */
+static inline double mdr_host_f32_round(double v)
+{
+    volatile float f = (float)v;
+    return (double)f;
+}
+
 /** Above this change of its coefficients (relative), f32's rounding of a
  *  profile's parameters is refused (mdr_host_f32_shape_change()): the
  *  cone's critical F moves 3 times the change of tan(theta), a twice, d
@@ -71,7 +82,7 @@ static inline double mdr_host_f32_shape_change(uint8_t kind, const double p[3])
         if (!(p[i] >= -(double)FLT_MAX && p[i] <= (double)FLT_MAX)) {
             return 0.0; /* (beyond float or NaN: the f32 input checks' case) */
         }
-        q[i] = (double)(float)p[i];
+        q[i] = mdr_host_f32_round(p[i]);
     }
     if (mdr_contact_init_f64(&c, kind, p, 1.0, 0.0) != MDR_OK) {
         return 0.0;
@@ -95,6 +106,85 @@ static inline int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], do
 {
     *change = mdr_host_f32_shape_change(kind, p);
     return *change > MDR_HOST_F32_SHAPE_MAX;
+}
+
+/** Above this change (relative, mdr_host_f32_eq_change()), f32's rounding
+ *  of an equilibrium's inputs is refused: with f32's own error in such a
+ *  state (at most 5.2e-7 for the smooth profiles, docs/accuracy.md) an
+ *  answer stays within f32's goal of 2e-6. */
+#define MDR_HOST_F32_EQ_MAX 1.5e-6
+
+
+/* d and F of the f64 equilibrium at a of the contact (kind, p, E, w), or of
+ * the state (a, *d) (F = F_eq + 2 E* a (d - d_eq), as `mdr eq --d`), with
+ * the scales docs/accuracy.md compares them on (d: max(|d|, dl), F:
+ * max(|F|, 2 E* a dl)); false where f64 refuses them */
+static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, double w, double a, const double *d,
+                                double o[4])
+{
+    mdr_contact_f64 c;
+    mdr_eqstate_f64 e;
+    if (mdr_contact_init_f64(&c, kind, p, E, w) != MDR_OK || mdr_eq_f64(&c, a, &e) != MDR_OK) {
+        return 0;
+    }
+    o[0] = d != NULL ? *d : e.d;
+    o[1] = d != NULL ? e.F + 2.0 * E * e.a * (*d - e.d) : e.F;
+    o[2] = o[0] < 0.0 ? -o[0] : o[0];
+    o[2] = o[2] > e.dl ? o[2] : e.dl;
+    o[3] = o[1] < 0.0 ? -o[1] : o[1];
+    o[3] = o[3] > 2.0 * E * e.a * e.dl ? o[3] : 2.0 * E * e.a * e.dl;
+    return o[0] - o[0] == 0.0 && o[1] - o[1] == 0.0;
+}
+
+/**
+ * @brief How far f32's rounding of an equilibrium's inputs moves it: the
+ *        f64 state at the values given and at their roundings to float
+ *        (the profile's parameters, E*, w, a and, for a state (a, d), d),
+ *        compared as docs/accuracy.md compares f32 with f64 (d relative to
+ *        max(|d|, dl), F to max(|F|, 2 E* a dl)). Where an answer depends
+ *        on a small difference of its inputs, the rounding alone moves it
+ *        beyond f32's accuracy though f32 computes its own inputs to a few
+ *        ulp: the exact sphere at a = R (1 - 1e-4), 4e-5 (R = 1 um, a =
+ *        9.9999e-7), 3.3e-2 at a = R (1 - 1.2e-7); the flattened tip just
+ *        above its flat, a = b (1 + 1e-7), 1.8e-3 (helper-41, stop 60).
+ *        The CLI refuses a change beyond MDR_HOST_F32_EQ_MAX (`eq`, and
+ *        each row of `curve`).
+ * @param kind  an analytic profile (not MDR_PROFILE_TABLE)
+ * @param d     the state's depth, or NULL: the equilibrium at a
+ * @return the larger change of d and F; 0 where a value is beyond float or
+ *         f64 refuses the values given (the f32 call names those); DBL_MAX
+ *         where f64 takes them and refuses their rounding
+ */
+static inline double mdr_host_f32_eq_change(uint8_t kind, const double p[3], double E, double w, double a,
+                                            const double *d)
+{
+    double q[3], v[4], u[4], dr, ed, eF;
+    const double in[6] = {p[0], p[1], p[2], E, w, a};
+    int i;
+    for (i = 0; i < 6; i++) {
+        if (!(in[i] >= -(double)FLT_MAX && in[i] <= (double)FLT_MAX)) {
+            return 0.0;
+        }
+    }
+    if (d != NULL && !(*d >= -(double)FLT_MAX && *d <= (double)FLT_MAX)) {
+        return 0.0;
+    }
+    if (!mdr_host_eq64(kind, p, E, w, a, d, v)) {
+        return 0.0;
+    }
+    for (i = 0; i < 3; i++) {
+        q[i] = mdr_host_f32_round(p[i]);
+    }
+    dr = d != NULL ? mdr_host_f32_round(*d) : 0.0;
+    if (!mdr_host_eq64(kind, q, mdr_host_f32_round(E), mdr_host_f32_round(w), mdr_host_f32_round(a),
+                       d != NULL ? &dr : NULL, u)) {
+        return DBL_MAX;
+    }
+    ed = (u[0] - v[0]) / v[2];
+    eF = (u[1] - v[1]) / v[3];
+    ed = ed < 0.0 ? -ed : ed;
+    eF = eF < 0.0 ? -eF : eF;
+    return ed > eF ? ed : eF;
 }
 
 /** The q31 engine with its table and the SI units of its Q formats, in

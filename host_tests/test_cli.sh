@@ -843,5 +843,52 @@ for k in 1646592 1647000 1647099; do
     [ "$r" = accepted ] && ok || bad "cone --theta $th (exact in float) in f32: $r"
 done
 
+# f32's rounding of an equilibrium's inputs (helper-41, stop 60: the exact
+# sphere at a = R (1 - 1e-5) 3.3e-4 off f64, the flattened tip at a = b (1 +
+# 1e-6) 2.6e-4, exit 0): over a/R = 1 - 1e-1 .. 1e-8 and a/b = 1 + 1e-1 ..
+# 1e-8 every f32 state within 2e-6 of f64's (d relative to max(|d|, dl), F
+# to max(|F|, 2 E* a dl), docs/accuracy.md), or refused naming the rounding
+eq_f32() { # eq_f32 E ARGS... -> "accepted" (within 2e-6 of f64), "refused" or a failure
+    local E=$1 o f e x y
+    shift
+    o=$($MDR eq "$@" --E "$E" 2>&1)
+    e=$?
+    if [ $e -eq 2 ] && printf '%s' "$o" | grep -q "^mdr: --a [-0-9.e+]*: f32's rounding of the inputs to float "; then
+        echo refused
+        return
+    fi
+    [ $e -eq 0 ] || { echo "exit $e: $o"; return; }
+    f=$($MDR eq "$@" --E "$E" --arith f64) || { echo "f64 failed"; return; }
+    x=$(for j in "$o" "$f"; do for k in a d F dl; do
+        printf '%s' "$j" | grep -o "\"$k\": [-0-9.e+]*" | head -1 | sed 's/.*: //'; done; done | tr '\n' ' ')
+    # x: a d F dl of f32, then a d F dl of f64
+    awk -v E="$E" -v s="$x" 'BEGIN { split(s, v, " "); sd = v[6] < 0 ? -v[6] : v[6]; if (v[8] > sd) sd = v[8];
+        sF = v[7] < 0 ? -v[7] : v[7]; if (2 * E * v[5] * v[8] > sF) sF = 2 * E * v[5] * v[8];
+        ed = (v[2] - v[6]) / sd; eF = (v[3] - v[7]) / sF; if (ed < 0) ed = -ed; if (eF < 0) eF = -eF;
+        exit !(ed <= 2e-6 && eF <= 2e-6) }' && echo accepted || echo "f32 $o vs f64 $f"
+}
+nacc=0
+nref=0
+for i in $(seq 0 28); do
+    for cmd in sphere flattip; do
+        if [ $cmd = sphere ]; then
+            a=$(awk -v i="$i" 'BEGIN { printf "%.9g", 1e-6 * (1 - 10^(-1 - 7 * i / 28)) }')
+            r=$(eq_f32 1e9 --profile sphere --R 1e-6 --w 0.05 --a "$a")
+        else
+            a=$(awk -v i="$i" 'BEGIN { printf "%.9g", 5e-5 * (1 + 10^(-1 - 7 * i / 28)) }')
+            r=$(eq_f32 1e9 --profile flattip --R 1e-3 --b 5e-5 --w 0.05 --a "$a")
+        fi
+        case $r in
+        accepted) nacc=$((nacc + 1)); ok ;;
+        refused) nref=$((nref + 1)); ok ;;
+        *) bad "eq $cmd --a $a in f32: $r" ;;
+        esac
+    done
+done
+[ $nacc -gt 10 ] && [ $nref -gt 10 ] && ok || bad "sphere and flattip near their edges: $nacc accepted, $nref refused"
+r=$($MDR curve --profile sphere --R 1e-6 --E 1e9 --w 0.05 --a-max 9.9999e-7 --n 100 2>&1)
+[ $? -eq 2 ] && printf '%s' "$r" | grep -q "^mdr: --a-max 9.9999e-07, its row 100 (a = [0-9.e-]*): f32's rounding" && ok ||
+    bad "curve of the sphere to a = R (1 - 1e-5) in f32: $r"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
