@@ -35,10 +35,10 @@ static inline double mdr_host_path_value(const double *path, long steps, long se
 }
 
 /* v rounded to float in double (v finite within float's range), through
- * a volatile float: GCC 12 -O2 folded (double)(float)v of a constant
- * array's elements into v itself after mdr_host_f32_eq_change's range
- * test (the flattened tip's b = 5e-5 kept its digits, and the check saw
- * 4.8e-7 where the rounding moves the state 4.6e-6; -O0 saw it) */
+ * a volatile float: with (double)(float)v, GCC 12 at -O2 gave v itself in
+ * mdr_host_f32_eq_change (the CLI's check of the flattened tip at a = b
+ * (1 + 5.6e-3) saw 4.8e-7 where the rounding moves the state 4.6e-6, as
+ * -O0 and the volatile show) */
 static inline double mdr_host_f32_round(double v)
 {
     volatile float f = (float)v;
@@ -70,8 +70,8 @@ static inline double mdr_host_f32_round(double v)
  * @param kind  an analytic profile (MDR_PROFILE_*, not MDR_PROFILE_TABLE)
  * @param p     its parameters in double
  * @return the change; 0 where p is beyond float or the f64 contact
- *         refuses it (the f32 input checks and init name those); HUGE (DBL_MAX) where it accepts p
- *         and refuses p rounded (theta rounded up to pi/2)
+ *         refuses it (the f32 input checks and init name those); DBL_MAX
+ *         where it takes p and refuses p rounded (theta rounded up to pi/2)
  */
 static inline double mdr_host_f32_shape_change(uint8_t kind, const double p[3])
 {
@@ -114,7 +114,6 @@ static inline int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], do
  *  answer stays within f32's goal of 2e-6. */
 #define MDR_HOST_F32_EQ_MAX 1.5e-6
 
-
 /* d and F of the f64 equilibrium at a of the contact (kind, p, E, w), or of
  * the state (a, *d) (F = F_eq + 2 E* a (d - d_eq), as `mdr eq --d`), with
  * the scales docs/accuracy.md compares them on (d: max(|d|, dl), F:
@@ -144,9 +143,10 @@ static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, doubl
  *        max(|d|, dl), F to max(|F|, 2 E* a dl)). Where an answer depends
  *        on a small difference of its inputs, the rounding alone moves it
  *        beyond f32's accuracy though f32 computes its own inputs to a few
- *        ulp: the exact sphere at a = R (1 - 1e-4), 4e-5 (R = 1 um, a =
- *        9.9999e-7), 3.3e-2 at a = R (1 - 1.2e-7); the flattened tip just
- *        above its flat, a = b (1 + 1e-7), 1.8e-3 (helper-41, stop 60).
+ *        ulp: the exact sphere at a = R (1 - 1e-5), 4e-5 to 3.3e-4 off
+ *        f64 for the typed values (R = 1 um, a = 9.9999e-7: 4e-5), 3.3e-2
+ *        at a = R (1 - 1.2e-7); the flattened tip just above its flat, a =
+ *        b (1 + 1e-7), 1.8e-3 (helper-41, stop 60).
  *        The CLI refuses a change beyond MDR_HOST_F32_EQ_MAX (`eq`, and
  *        each row of `curve`).
  * @param kind  an analytic profile (not MDR_PROFILE_TABLE)
