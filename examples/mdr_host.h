@@ -45,6 +45,13 @@ static inline double mdr_host_f32_round(double v)
     return (double)f;
 }
 
+/* v finite within float's range (not NaN): one the f32 input checks have
+ * not refused, which mdr_host_f32_round may convert */
+static inline int mdr_host_in_float(double v)
+{
+    return v >= -(double)FLT_MAX && v <= (double)FLT_MAX;
+}
+
 /** Above this change of its coefficients (relative), f32's rounding of a
  *  profile's parameters is refused (mdr_host_f32_shape_change()): the
  *  cone's critical F moves 3 times the change of tan(theta), a twice, d
@@ -79,7 +86,7 @@ static inline double mdr_host_f32_shape_change(uint8_t kind, const double p[3])
     double q[3], m = 0.0;
     int i;
     for (i = 0; i < 3; i++) {
-        if (!(p[i] >= -(double)FLT_MAX && p[i] <= (double)FLT_MAX)) {
+        if (!mdr_host_in_float(p[i])) {
             return 0.0; /* (beyond float or NaN: the f32 input checks' case) */
         }
         q[i] = mdr_host_f32_round(p[i]);
@@ -162,11 +169,11 @@ static inline double mdr_host_f32_eq_change(uint8_t kind, const double p[3], dou
     const double in[6] = {p[0], p[1], p[2], E, w, a};
     int i;
     for (i = 0; i < 6; i++) {
-        if (!(in[i] >= -(double)FLT_MAX && in[i] <= (double)FLT_MAX)) {
+        if (!mdr_host_in_float(in[i])) {
             return 0.0;
         }
     }
-    if (d != NULL && !(*d >= -(double)FLT_MAX && *d <= (double)FLT_MAX)) {
+    if (d != NULL && !mdr_host_in_float(*d)) {
         return 0.0;
     }
     if (!mdr_host_eq64(kind, p, E, w, a, d, v)) {

@@ -823,17 +823,19 @@ cone_f32() { # cone_f32 THETA CONTROL -> "accepted" (within 2e-6 of f64), "refus
     done
     echo accepted
 }
+tally() { # tally RESULT WHAT: an f32 sweep's answer counted (nacc, nref), else a failure
+    case $1 in
+    accepted) nacc=$((nacc + 1)); ok ;;
+    refused) nref=$((nref + 1)); ok ;;
+    *) bad "$2 in f32: $1" ;;
+    esac
+}
 nacc=0
 nref=0
 for i in $(seq 0 50); do
     th=$(awk -v i="$i" 'BEGIN { printf "%.10g", 1.5707963267948966 - 10^(-7.5 * i / 50) }')
     for ctl in load grips; do
-        r=$(cone_f32 "$th" $ctl)
-        case $r in
-        accepted) nacc=$((nacc + 1)); ok ;;
-        refused) nref=$((nref + 1)); ok ;;
-        *) bad "cone --theta $th --control $ctl in f32: $r" ;;
-        esac
+        tally "$(cone_f32 "$th" $ctl)" "cone --theta $th --control $ctl"
     done
 done
 [ $nacc -gt 10 ] && [ $nref -gt 10 ] && ok || bad "cone near pi/2: $nacc accepted, $nref refused"
@@ -878,11 +880,7 @@ for i in $(seq 0 28); do
             a=$(awk -v i="$i" 'BEGIN { printf "%.9g", 5e-5 * (1 + 10^(-1 - 7 * i / 28)) }')
             r=$(eq_f32 1e9 --profile flattip --R 1e-3 --b 5e-5 --w 0.05 --a "$a")
         fi
-        case $r in
-        accepted) nacc=$((nacc + 1)); ok ;;
-        refused) nref=$((nref + 1)); ok ;;
-        *) bad "eq $cmd --a $a in f32: $r" ;;
-        esac
+        tally "$r" "eq $cmd --a $a"
     done
 done
 [ $nacc -gt 10 ] && [ $nref -gt 10 ] && ok || bad "sphere and flattip near their edges: $nacc accepted, $nref refused"
