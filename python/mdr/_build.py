@@ -118,6 +118,9 @@ const char *mdr_regime_str(uint8_t regime);
 size_t mdrpy_fit_work_len(size_t n);
 double mdr_host_path_value(const double *path, long steps, long seg, long j);
 int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], double *change);
+double mdrpy_f32_eq_max(void);
+size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
+                            const double *d, double *change);
 mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
                         uint8_t control, double k_m, const double *path, size_t npath,
                         double *a_max);

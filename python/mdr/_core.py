@@ -104,6 +104,29 @@ def f32_shape(kind, p, names, where):
                     ", or the cone as Contact('powerlaw', C=tan(theta), n=1)" if kind == lib.MDR_PROFILE_CONE else ""))
 
 
+def f32_eq(kind, p, E, w, flat):
+    """The CLI's f32 check of `mdr eq` and each row of `mdr curve`, over
+    the flat inputs (a, or a and d): (i, change) of the first point whose
+    state f32's rounding of the inputs (p, E, w as given, a, d) moves by more
+    than MDR_HOST_F32_EQ_MAX, or None (mdrpy_f32_eq_refused, which calls
+    mdr_host_f32_eq_change, examples/mdr_host.h; helper-41, stop 60: the
+    exact sphere at a = R (1 - 1e-5) answered 4e-5 off f64)."""
+    a = flat[0]
+    ch = ffi.new("double *")
+    i = lib.mdrpy_f32_eq_refused(kind, [float(v) for v in p], E, w, a.size, dptr(a),
+                                 dptr(flat[1]) if len(flat) > 1 else ffi.NULL, ch)
+    return (int(i), float(ch[0])) if i < a.size else None
+
+
+def f32_eq_error(what, shape, i, change, names, values):
+    """mdr.Error (MDR_E_PARAM, as f32_shape: the CLI's usage error, exit 2)
+    for point i of f32_eq, named as element_error names it."""
+    return element_error(lib.MDR_E_PARAM, what, shape, i, names, values,
+                         hint="f32's rounding of the inputs to float %s; use arith='f64'" % (
+                             "moves the state by %.2g (more than %g)" % (change, lib.mdrpy_f32_eq_max())
+                             if change < 1e300 else "puts the state outside the profile"))
+
+
 def control_code(control, where):
     try:
         return CONTROLS[control]
@@ -141,7 +164,7 @@ def dptr(a):
     return ffi.from_buffer("double[]", a)
 
 
-def element_error(code, what, shape, i, names, values):
+def element_error(code, what, shape, i, names, values, hint=""):
     """Error for element i of a vectorised call (flat index i into shape)."""
     if shape == ():
         index = None
@@ -151,7 +174,7 @@ def element_error(code, what, shape, i, names, values):
         where = "%s: element %s" % (what, index)
     vals = ", ".join("%s = %.9g" % (n, v[i]) for n, v in zip(names, values))
     return Error(code, "%s (%s)" % (where, vals), index=index, value=tuple(float(v[i]) for v in values)
-                 if len(values) > 1 else float(values[0][i]))
+                 if len(values) > 1 else float(values[0][i]), hint=hint)
 
 
 def shaped(a, shape):

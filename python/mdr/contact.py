@@ -8,8 +8,8 @@ import types
 
 import numpy as np
 
-from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_shape, ffi, lib, narrow, real_array,
-                    shaped, shaped_bool)
+from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq, f32_eq_error, f32_shape, ffi, lib,
+                    narrow, real_array, shaped, shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -190,23 +190,33 @@ class Contact:
     def __repr__(self):
         return "mdr.Contact(%r, %s, arith=%r)" % (self.profile, self._args(), self.arith)
 
-    def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None):
+    def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None, rounding=False):
         """Call the C loop name over the broadcast inputs; (shape, out, flags,
-        the flat inputs)."""
+        the flat inputs). rounding: an f32 equilibrium (eq): the points are
+        checked as `mdr eq` and `mdr curve` check theirs (f32_eq), and the
+        first refused point raises after the points before it are computed
+        (a refusal of the library before it is raised first, as the CLI's
+        rows)."""
         shape, flat = broadcast(what, names, inputs)
         n = flat[0].size
+        refused = None
+        if rounding and self.arith == "f32" and self.kind != lib.MDR_PROFILE_TABLE:
+            refused = f32_eq(self.kind, self.p, self.E, self.w, flat)
         out = np.empty((ncols, n))
         flags = np.empty((nflags, n), dtype=np.uint8) if nflags else None
         fail = ffi.new("size_t *")
         args = [dptr(a) for a in flat]
         if nullable is not None:  # an optional input given as NULL
             args.insert(nullable, ffi.NULL)
+        m = n if refused is None else refused[0]  # the points before a refused one
         if nflags:
-            st = self._f[name](self._c, n, *args, dptr(out), ffi.from_buffer("uint8_t[]", flags), fail)
+            st = self._f[name](self._c, m, *args, dptr(out), ffi.from_buffer("uint8_t[]", flags), fail)
         else:
-            st = self._f[name](self._c, n, *args, dptr(out), fail)
+            st = self._f[name](self._c, m, *args, dptr(out), fail)
         if st != lib.MDR_OK:
             raise element_error(st, what, shape, fail[0], names, flat)
+        if refused is not None:
+            raise f32_eq_error(what, shape, refused[0], refused[1], names, flat)
         return shape, out, flags, flat
 
     def eq(self, a, d=None):
@@ -217,9 +227,10 @@ class Contact:
         states of the spring engine: a State (F, K_I, G).
         A refused element raises mdr.Error naming it (.index)."""
         if d is not None:
-            shape, out, _, _ = self._loop("mdrpy_state", "eq", ("a", "d"), (a, d), lib.MDRPY_ST_N)
+            shape, out, _, _ = self._loop("mdrpy_state", "eq", ("a", "d"), (a, d), lib.MDRPY_ST_N, rounding=True)
             return State(**{k: shaped(out[getattr(lib, "MDRPY_ST_" + k.upper())], shape) for k in State.__slots__})
-        shape, out, flags, _ = self._loop("mdrpy_eq", "eq", ("a",), (a,), lib.MDRPY_EQ_N, lib.MDRPY_EQ_NFLAGS)
+        shape, out, flags, _ = self._loop("mdrpy_eq", "eq", ("a",), (a,), lib.MDRPY_EQ_N, lib.MDRPY_EQ_NFLAGS,
+                                          rounding=True)
         cols = {k: shaped(out[getattr(lib, "MDRPY_EQ_" + k.upper())], shape) for k in EqState.__slots__[:8]}
         for k in EqState.__slots__[8:]:
             cols[k] = shaped_bool(flags[getattr(lib, "MDRPY_EQ_" + k.upper())], shape)

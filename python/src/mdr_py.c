@@ -24,6 +24,37 @@ size_t mdrpy_fit_work_len(size_t n)
     return 2u * n + MDR_FIT_WORK_LEN(n);
 }
 
+double mdrpy_f32_eq_max(void)
+{
+    return MDR_HOST_F32_EQ_MAX;
+}
+
+/* v held by float exactly (its rounding is v) */
+static int mdrpy_is_float(double v)
+{
+    return mdr_host_in_float(v) && mdr_host_f32_round(v) == v;
+}
+
+size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
+                            const double *d, double *change)
+{
+    const int exact = mdrpy_is_float(p[0]) && mdrpy_is_float(p[1]) && mdrpy_is_float(p[2]) && mdrpy_is_float(E) &&
+                      mdrpy_is_float(w);
+    size_t i;
+    for (i = 0; i < n; i++) {
+        double ch;
+        if (exact && mdrpy_is_float(a[i]) && (d == NULL || mdrpy_is_float(d[i]))) {
+            continue; /* rounded the same: the change is 0 */
+        }
+        ch = mdr_host_f32_eq_change(kind, p, E, w, a[i], d != NULL ? &d[i] : NULL);
+        if (ch > MDR_HOST_F32_EQ_MAX) {
+            *change = ch;
+            return i;
+        }
+    }
+    return n;
+}
+
 /* the q31 table from the f64 one and the double init, as `mdr cycle` */
 static mdr_status mdrpy_init(mdrpy_engine *x, mdr_node_q31 *nq)
 {

@@ -118,6 +118,26 @@ typedef struct {
  */
 size_t mdrpy_fit_work_len(size_t n);
 
+/** The change above which the f32 calls refuse their inputs' rounding
+ *  (MDR_HOST_F32_EQ_MAX, examples/mdr_host.h), for the package's messages. */
+double mdrpy_f32_eq_max(void);
+
+/**
+ * @brief The CLI's f32 check of `eq` and `curve` over n points: the first i
+ *        whose state f32's rounding of the inputs moves by more than
+ *        MDR_HOST_F32_EQ_MAX (mdr_host_f32_eq_change(kind, p, E, w, a[i],
+ *        d ? &d[i] : NULL): the f64 state at the values and at their
+ *        roundings to float). p, E, w: the values given (not rounded).
+ *        Where every input is already a float the change is 0 and the two
+ *        f64 states are skipped.
+ * @param d      NULL: the equilibria at a; else the states (a[i], d[i])
+ * @param change the refused point's change (DBL_MAX: f64 takes the values
+ *               and refuses their rounding); untouched when none is
+ * @return the index of the first refused point, or n
+ */
+size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
+                            const double *d, double *change);
+
 /* ---- contacts: one set per floating arithmetic (mdr_py_t.h) ---- */
 #define MDR_TEMPLATE "mdr_py_t.h"
 #include "mdr_each_arith.h"

@@ -118,7 +118,7 @@ def test_worn_tip_kendall(mat, arith):
     """A flat of radius b larger than the JKR grips pull-off radius holds
     the contact at its rim until it ruptures: F = -sqrt(8 pi b^3 E* w)
     (Kendall), under fixed grips and under fixed load; the same as the
-    analytic flattened tip at every radius."""
+    analytic flattened tip (f64) at every radius."""
     E, w, R = mat
     ag = jkr_grips_a(E, w, R)
     for ratio in (1.5, 3.0, 10.0):
@@ -130,7 +130,10 @@ def test_worn_tip_kendall(mat, arith):
             s = c.critical(control)
             assert within(abs(s.F / kendall - 1), KEND[arith], "kendall " + arith), (ratio, control, s)
             assert within(abs(s.a / b - 1), KEND[arith], "kendall " + arith)
-        ft = mdr.Contact("flattip", E=E, w=w, R=R, b=b, arith=arith)
+        # (the analytic tip in f64: in f32 its state at a = 1.01 b, b = 10
+        # ag, is refused, as `mdr eq --arith f32` refuses it: b and a rounded
+        # to float move it by 3.2e-6)
+        ft = mdr.Contact("flattip", E=E, w=w, R=R, b=b)
         a = np.linspace(1.01, 3.9, 100) * b
         assert within(curve_err(c.eq(a).F, ft.eq(a).F), SAMP[arith])
 
