@@ -1,0 +1,227 @@
+# SPDX-License-Identifier: MIT
+"""f32's rounding of an equilibrium's inputs: the Python package refuses
+exactly what the CLI refuses, and answers what it answers.
+
+`mdr eq` and each row of `mdr curve` in f32 refuse a state that rounding
+its typed inputs (profile, E*, w, a, d) to float moves by more than
+MDR_HOST_F32_EQ_MAX = 1.5e-6 (mdr_host_f32_eq_change, examples/mdr_host.h;
+helper-41, stop 60: the exact sphere at a = R (1 - 1e-5) answered 4e-5 off
+f64, the flattened tip at a = b (1 + 1e-6) 2.6e-4). Contact(..., arith=
+"f32").eq calls the same check (mdrpy_f32_eq_refused). The sweeps are
+host_tests/test_cli.sh's: the sphere R = 1 um to a/R = 1 - 1e-1 ... 1e-8,
+the flattened tip R = 1 mm, b = 50 um to a/b = 1 + 1e-1 ... 1e-8, E* = 1
+GPa, w = 0.05 J/m^2, the radii typed as %.9g decimals.
+
+Tolerances; the worst error measured by this file in brackets (printed at
+the end of the run):
+  refusal           the same for the CLI and Python at every point: exact
+  change            the change the refusals name: the same %.2g text
+  0                 Python's f32 answers against the CLI's, which prints
+                    %.9g: the same float (a, d, F; curves row for row)
+  EQ32 = 2e-6       every accepted f32 equilibrium against f64 at the
+                    typed values (d relative to max(|d|, dl), F to
+                    max(|F|, 2 E* a dl), docs/accuracy.md; test_cli.sh's
+                    bound) [d 8.8e-7, F 1.1e-6]
+  ST32 = 2e-6       accepted f32 states (a, d) against f64, F relative to
+                    max(|F|, 2 E* a dl) [1.5e-6]
+"""
+import json
+import re
+import subprocess
+
+import numpy as np
+import pytest
+
+import mdr
+from conftest import Worst
+
+EQ32 = 2e-6
+ST32 = 2e-6
+within = Worst("test_f32_rounding")
+
+E, W = 1e9, 0.05
+SCENES = {
+    # name: (CLI profile options, Contact parameters, the edge, the side)
+    "sphere": (["--profile", "sphere", "--R", "1e-6"], dict(R=1e-6), 1e-6, -1.0),
+    "flattip": (["--profile", "flattip", "--R", "1e-3", "--b", "5e-5"], dict(R=1e-3, b=5e-5), 5e-5, 1.0),
+}
+REFUSED = re.compile(r"^mdr: --a (\S+): f32's rounding of the inputs to float (moves the state by (\S+) \(more than "
+                     r"1\.5e-06\)|puts the state outside the profile): --arith f64$")
+
+
+def radii(name):
+    """test_cli.sh's 29 radii of a scene, as the typed decimals."""
+    _, _, edge, side = SCENES[name]
+    return ["%.9g" % (edge * (1 + side * 10 ** (-1 - 7 * i / 28))) for i in range(29)]
+
+
+def run_cli(cli, args):
+    """(exit code, stdout, stderr) of `mdr args`."""
+    p = subprocess.run([cli] + args, capture_output=True, text=True, check=False)
+    return p.returncode, p.stdout, p.stderr
+
+
+def err64(c64, a, d32, F32, d=None):
+    """(d error, F error) of an f32 state against f64's at the typed values,
+    on docs/accuracy.md's scales."""
+    e = c64.eq(a)
+    d64 = e.d if d is None else d
+    F64 = e.F if d is None else c64.eq(a, d=d).F
+    sd = max(abs(d64), e.dl)
+    sF = max(abs(F64), 2 * E * e.a * e.dl)
+    return abs(d32 - d64) / sd, abs(F32 - F64) / sF
+
+
+def python_f32(c32, a, d=None):
+    """("refused", change text) or ("answer", state) of Python's f32 call."""
+    try:
+        return "answer", c32.eq(a) if d is None else c32.eq(a, d=d)
+    except mdr.Error as e:
+        assert e.status == "MDR_E_PARAM" and e.index is None, str(e)
+        m = re.search(r"f32's rounding of the inputs to float (moves the state by (\S+) \(more than 1\.5e-06\)|"
+                      r"puts the state outside the profile); use arith='f64'$", str(e))
+        assert m, str(e)
+        assert e.value == (a if d is None else (a, d)), (e.value, a, d)
+        return "refused", m.group(1)
+
+
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_eq_edges_as_cli(cli, name):
+    """At every radius of test_cli.sh's sweep Python refuses where `mdr eq
+    --arith f32` refuses (MDR_E_PARAM, the same change named), and where it
+    answers both give the same float, within EQ32 of f64."""
+    opts, params, _, _ = SCENES[name]
+    c32 = mdr.Contact(name, E=E, w=W, arith="f32", **params)
+    c64 = mdr.Contact(name, E=E, w=W, **params)
+    n = {"answer": 0, "refused": 0}
+    for a_txt in radii(name):
+        a = float(a_txt)
+        rc, out, err = run_cli(cli, ["eq"] + opts + ["--E", "1e9", "--w", "0.05", "--a", a_txt, "--arith", "f32"])
+        kind, got = python_f32(c32, a)
+        if rc == 2:
+            m = REFUSED.match(err.strip())
+            assert m and float(m.group(1)) == a, err
+            assert kind == "refused" and got == m.group(2), (a_txt, err, got)
+        else:
+            assert rc == 0, err
+            assert kind == "answer", (a_txt, got)
+            j = json.loads(out)
+            for k in ("a", "d", "F"):
+                assert np.float32(j[k]) == np.float32(getattr(got, k)), (a_txt, k, j[k], getattr(got, k))
+            ed, eF = err64(c64, a, got.d, got.F)
+            assert within(ed, EQ32, "eq d"), (a_txt, ed)
+            assert within(eF, EQ32, "eq F"), (a_txt, eF)
+        n[kind] += 1
+    # both outcomes (measured: sphere 7 answered, 22 refused; flattip 6, 23)
+    assert n["answer"] >= 5 and n["refused"] >= 20, n
+
+
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_eq_edges_vectorised(name):
+    """The sweep as one array: the first refused element is the first radius
+    the scalar calls refuse (.index), and the answers before it are the
+    scalar calls' answers."""
+    _, params, _, _ = SCENES[name]
+    c32 = mdr.Contact(name, E=E, w=W, arith="f32", **params)
+    a = np.array([float(x) for x in radii(name)])
+    kinds = [python_f32(c32, float(x))[0] for x in a]
+    first = kinds.index("refused")
+    with pytest.raises(mdr.Error, match="f32's rounding of the inputs") as ei:
+        c32.eq(a)
+    assert ei.value.status == "MDR_E_PARAM" and ei.value.index == first and ei.value.value == a[first]
+    ok = c32.eq(a[:first])
+    assert all(ok.d[i] == c32.eq(float(a[i])).d for i in range(first))
+    # a 2-D array names its element as a tuple
+    with pytest.raises(mdr.Error) as ei:
+        c32.eq(a.reshape(1, -1))
+    assert ei.value.index == (0, first)
+    # the f64 contact answers them all
+    assert mdr.Contact(name, E=E, w=W, **params).eq(a).d.shape == a.shape
+
+
+def test_library_refusal_before_the_rounding():
+    """As the CLI's rows: an element the library refuses before the refused
+    rounding is the error (MDR_E_RADIUS), one after it is not reached."""
+    c32 = mdr.Contact("sphere", E=E, w=W, R=1e-6, arith="f32")
+    with pytest.raises(mdr.Error) as ei:
+        c32.eq([5e-7, -1e-7, 9.9999e-7])
+    assert ei.value.status == "MDR_E_RADIUS" and ei.value.index == 1
+    with pytest.raises(mdr.Error) as ei:
+        c32.eq([5e-7, 9.9999e-7, -1e-7])
+    assert ei.value.status == "MDR_E_PARAM" and ei.value.index == 1
+
+
+CURVES = [  # (scene, --a-max, --n, what `mdr curve --arith f32` does)
+    ("sphere", "9.9e-7", 37, "answer"),
+    ("sphere", "9.95e-7", 37, "rounding"),
+    ("sphere", "9.99e-7", 37, "rounding"),
+    ("sphere", "9.9999e-7", 100, "rounding"),  # test_cli.sh's: its row 100
+    ("flattip", "5.5e-5", 50, "answer"),
+    ("flattip", "5.05e-5", 50, "answer"),
+    ("flattip", "5.005e-5", 50, "rounding"),
+    ("flattip", "1.00001e-4", 1000, "rounding"),  # row 500, a = b (1 + 1e-5), of 1000
+    ("flattip", "1.0002e-4", 20000, "rounding"),  # row 9998: "outside the profile"
+    ("flattip", "1e-4", 1000, "library"),  # row 500 at a = b: MDR_E_OVERFLOW before any rounding's
+]
+
+
+@pytest.mark.parametrize("name,a_max,n,want", CURVES)
+def test_curve_as_cli(cli, name, a_max, n, want):
+    """`mdr curve --arith f32` against Contact.eq at its radii (a_max i / n):
+    refused at the same row with the same change, refused by the library
+    with the same status, or the same floats row for row."""
+    opts, params, _, _ = SCENES[name]
+    c32 = mdr.Contact(name, E=E, w=W, arith="f32", **params)
+    a = float(a_max) * np.arange(1, n + 1) / n
+    rc, out, err = run_cli(cli, ["curve"] + opts + ["--E", "1e9", "--w", "0.05", "--a-max", a_max, "--n", str(n),
+                                                    "--arith", "f32"])
+    err = err.strip()
+    if want == "answer":
+        assert rc == 0, err
+        rows = np.loadtxt(out.splitlines()[1:], delimiter=",", ndmin=2)
+        e = c32.eq(a)
+        for k, col in (("a", 0), ("d", 1), ("F", 2)):
+            assert np.array_equal(rows[:, col].astype(np.float32), getattr(e, k).astype(np.float32)), k
+        return
+    assert rc == 2 and out == "", err
+    with pytest.raises(mdr.Error) as ei:
+        c32.eq(a)
+    if want == "rounding":
+        m = re.match(r"^mdr: --a-max \S+, its row (\d+) \(a = \S+\): f32's rounding of the inputs to float (moves "
+                     r"the state by \S+ \(more than 1\.5e-06\)|puts the state outside the profile): --arith f64$", err)
+        assert m, err
+        assert ei.value.status == "MDR_E_PARAM" and ei.value.index == int(m.group(1)) - 1, str(ei.value)
+        assert str(ei.value).endswith("f32's rounding of the inputs to float %s; use arith='f64'" % m.group(2))
+    else:
+        m = re.match(r"^mdr: --a-max: (.*) \((MDR_E_\w+), status -?\d+\)$", err)
+        assert m, err
+        assert ei.value.status == m.group(2) and ei.value.message == m.group(1), str(ei.value)
+
+
+@pytest.mark.parametrize("name", sorted(SCENES))
+def test_states_as_cli(cli, name):
+    """States (a, d) at the sweep's radii (d = 0 and d = the f64 d_eq as
+    %.9g): Python refuses where `mdr eq --d --arith f32` refuses, and an
+    accepted F is within ST32 of f64 (Python's F is 2 E* (a d - G(a)), the
+    CLI's F_eq + 2 E* a (d - d_eq): the same state, other roundings)."""
+    opts, params, _, _ = SCENES[name]
+    c32 = mdr.Contact(name, E=E, w=W, arith="f32", **params)
+    c64 = mdr.Contact(name, E=E, w=W, **params)
+    n = {"answer": 0, "refused": 0}
+    for a_txt in radii(name):
+        a = float(a_txt)
+        for d_txt in ("0", "%.9g" % c64.eq(a).d):
+            d = float(d_txt)
+            rc, _, err = run_cli(cli, ["eq"] + opts + ["--E", "1e9", "--w", "0.05", "--a", a_txt, "--d", d_txt,
+                                                       "--arith", "f32"])
+            kind, got = python_f32(c32, a, d)
+            if rc == 2:
+                m = REFUSED.match(err.strip())
+                assert m and kind == "refused" and got == m.group(2), (a_txt, d_txt, err, got)
+            else:
+                assert rc == 0 and kind == "answer", (a_txt, d_txt, err, got)
+                _, eF = err64(c64, a, got.d, got.F, d=d)
+                assert within(eF, ST32, "state F"), (a_txt, d_txt, eF)
+            n[kind] += 1
+    # (measured: sphere 50 answered, 8 refused; flattip 56, 2)
+    assert n["answer"] > 40 and n["refused"] > 0, n
