@@ -121,16 +121,14 @@ static inline int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], do
  *  answer stays within f32's goal of 2e-6. */
 #define MDR_HOST_F32_EQ_MAX 1.5e-6
 
-/* d and F of the f64 equilibrium at a of the contact (kind, p, E, w), or of
- * the state (a, *d) (F = F_eq + 2 E* a (d - d_eq), as `mdr eq --d`), with
- * the scales docs/accuracy.md compares them on (d: max(|d|, dl), F:
+/* d and F of the f64 equilibrium at a of the contact c (of modulus E), or
+ * of the state (a, *d) (F = F_eq + 2 E* a (d - d_eq), as `mdr eq --d`),
+ * with the scales docs/accuracy.md compares them on (d: max(|d|, dl), F:
  * max(|F|, 2 E* a dl)); false where f64 refuses them */
-static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, double w, double a, const double *d,
-                                double o[4])
+static inline int mdr_host_eq64_c(const mdr_contact_f64 *c, double E, double a, const double *d, double o[4])
 {
-    mdr_contact_f64 c;
     mdr_eqstate_f64 e;
-    if (mdr_contact_init_f64(&c, kind, p, E, w) != MDR_OK || mdr_eq_f64(&c, a, &e) != MDR_OK) {
+    if (mdr_eq_f64(c, a, &e) != MDR_OK) {
         return 0;
     }
     o[0] = d != NULL ? *d : e.d;
@@ -140,6 +138,49 @@ static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, doubl
     o[3] = o[1] < 0.0 ? -o[1] : o[1];
     o[3] = o[3] > 2.0 * E * e.a * e.dl ? o[3] : 2.0 * E * e.a * e.dl;
     return o[0] - o[0] == 0.0 && o[1] - o[1] == 0.0;
+}
+
+/* mdr_host_eq64_c() of the contact (kind, p, E, w); false where f64
+ * refuses it */
+static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, double w, double a, const double *d,
+                                double o[4])
+{
+    mdr_contact_f64 c;
+    return mdr_contact_init_f64(&c, kind, p, E, w) == MDR_OK && mdr_host_eq64_c(&c, E, a, d, o);
+}
+
+/**
+ * @brief mdr_host_f32_eq_change() at a (and *d) of contacts already made
+ *        (a caller of many radii makes them once: the Python package's
+ *        f32 eq, mdrpy_f32_eq_refused in python/src/mdr_py.c).
+ * @param c  the f64 contact at the values given (profile, E, w), or NULL
+ *           where f64 refuses them
+ * @param r  the f64 contact at their roundings to float, or NULL where f64
+ *           refuses those
+ * @param E  E* as given (r's is its rounding)
+ * @return as mdr_host_f32_eq_change(); the profile's parameters, E and w
+ *         within float are the caller's check
+ */
+static inline double mdr_host_f32_eq_change_c(const mdr_contact_f64 *c, const mdr_contact_f64 *r, double E,
+                                              double a, const double *d)
+{
+    double v[4], u[4], dr, ed, eF;
+    if (!mdr_host_in_float(a) || (d != NULL && !mdr_host_in_float(*d))) {
+        return 0.0;
+    }
+    if (c == NULL || !mdr_host_eq64_c(c, E, a, d, v)) {
+        return 0.0;
+    }
+    dr = d != NULL ? mdr_host_f32_round(*d) : 0.0;
+    if (r == NULL ||
+        !mdr_host_eq64_c(r, mdr_host_f32_round(E), mdr_host_f32_round(a), d != NULL ? &dr : NULL, u)) {
+        return DBL_MAX;
+    }
+    ed = (u[0] - v[0]) / v[2];
+    eF = (u[1] - v[1]) / v[3];
+    ed = ed < 0.0 ? -ed : ed;
+    eF = eF < 0.0 ? -eF : eF;
+    return ed > eF ? ed : eF;
 }
 
 /**
@@ -155,7 +196,8 @@ static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, doubl
  *        at a = R (1 - 1.2e-7); the flattened tip just above its flat, a =
  *        b (1 + 1e-7), 1.8e-3 (helper-41, stop 60).
  *        The CLI refuses a change beyond MDR_HOST_F32_EQ_MAX (`eq`, and
- *        each row of `curve`).
+ *        each row of `curve`), and so does the Python package's f32
+ *        Contact.eq (through mdr_host_f32_eq_change_c()).
  * @param kind  an analytic profile (not MDR_PROFILE_TABLE)
  * @param d     the state's depth, or NULL: the equilibrium at a
  * @return the larger change of d and F; 0 where a value is beyond float or
@@ -165,33 +207,21 @@ static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, doubl
 static inline double mdr_host_f32_eq_change(uint8_t kind, const double p[3], double E, double w, double a,
                                             const double *d)
 {
-    double q[3], v[4], u[4], dr, ed, eF;
-    const double in[6] = {p[0], p[1], p[2], E, w, a};
-    int i;
-    for (i = 0; i < 6; i++) {
-        if (!mdr_host_in_float(in[i])) {
+    mdr_contact_f64 c, r;
+    double q[3];
+    int i, cok, rok;
+    for (i = 0; i < 3; i++) {
+        if (!mdr_host_in_float(p[i])) {
             return 0.0;
         }
-    }
-    if (d != NULL && !mdr_host_in_float(*d)) {
-        return 0.0;
-    }
-    if (!mdr_host_eq64(kind, p, E, w, a, d, v)) {
-        return 0.0;
-    }
-    for (i = 0; i < 3; i++) {
         q[i] = mdr_host_f32_round(p[i]);
     }
-    dr = d != NULL ? mdr_host_f32_round(*d) : 0.0;
-    if (!mdr_host_eq64(kind, q, mdr_host_f32_round(E), mdr_host_f32_round(w), mdr_host_f32_round(a),
-                       d != NULL ? &dr : NULL, u)) {
-        return DBL_MAX;
+    if (!mdr_host_in_float(E) || !mdr_host_in_float(w)) {
+        return 0.0;
     }
-    ed = (u[0] - v[0]) / v[2];
-    eF = (u[1] - v[1]) / v[3];
-    ed = ed < 0.0 ? -ed : ed;
-    eF = eF < 0.0 ? -eF : eF;
-    return ed > eF ? ed : eF;
+    cok = mdr_contact_init_f64(&c, kind, p, E, w) == MDR_OK;
+    rok = mdr_contact_init_f64(&r, kind, q, mdr_host_f32_round(E), mdr_host_f32_round(w)) == MDR_OK;
+    return mdr_host_f32_eq_change_c(cok ? &c : NULL, rok ? &r : NULL, E, a, d);
 }
 
 /** The q31 engine with its table and the SI units of its Q formats, in

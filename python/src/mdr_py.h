@@ -127,9 +127,10 @@ double mdrpy_f32_eq_max(void);
  *        whose state f32's rounding of the inputs moves by more than
  *        MDR_HOST_F32_EQ_MAX (mdr_host_f32_eq_change(kind, p, E, w, a[i],
  *        d ? &d[i] : NULL): the f64 state at the values and at their
- *        roundings to float). p, E, w: the values given (not rounded).
- *        Where every input is already a float the change is 0 and the two
- *        f64 states are skipped.
+ *        roundings to float), its two f64 contacts made once
+ *        (mdr_host_f32_eq_change_c()). p, E, w: the values given (not
+ *        rounded). Where every input is already a float the change is 0
+ *        and the two f64 states are skipped.
  * @param d      NULL: the equilibria at a; else the states (a[i], d[i])
  * @param change the refused point's change (DBL_MAX: f64 takes the values
  *               and refuses their rounding); untouched when none is
