@@ -225,7 +225,11 @@ class Contact:
 
         With d [m] (broadcast against a): any state (a, d), e.g. pinned
         states of the spring engine: a State (F, K_I, G).
-        A refused element raises mdr.Error naming it (.index)."""
+        A refused element raises mdr.Error naming it (.index). In f32 an
+        element whose state the rounding of its inputs to float moves by
+        more than 1.5e-6 is refused (MDR_E_PARAM), as `mdr eq` and `mdr
+        curve --arith f32` refuse it (the sphere near a = R, the flattened
+        tip just above its flat; docs/accuracy.md)."""
         if d is not None:
             shape, out, _, _ = self._loop("mdrpy_state", "eq", ("a", "d"), (a, d), lib.MDRPY_ST_N, rounding=True)
             return State(**{k: shaped(out[getattr(lib, "MDRPY_ST_" + k.upper())], shape) for k in State.__slots__})
