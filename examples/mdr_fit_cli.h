@@ -1126,9 +1126,9 @@ static int fit_main(int argc, char **argv)
     struct cli_kv kv[CLI_MAX_FLAGS];
     int nkv;
     struct fit_args A;
-    const char *profile = NULL, *pname[3];
-    double pval[3];
-    int i, k, np = 0, have_k = 0, have_E0 = 0, have_w0 = 0, pi = -1, used[3] = {0, 0, 0};
+    const char *profile = NULL, *pname[3], *xname[4];
+    double pval[3], xval[4];
+    int i, k, np = 0, nx = 0, have_k = 0, have_E0 = 0, have_w0 = 0, pi = -1, used[3] = {0, 0, 0};
     long ncpu;
     memset(&A, 0, sizeof A);
     A.f64 = 1;
@@ -1189,14 +1189,22 @@ static int fit_main(int argc, char **argv)
         } else if (is_subnormal(x)) {
             return usage_errf("%s: %s: %s", f, SUBNORMAL_WHY, v);
         } else if (strcmp(f, "--k-machine") == 0) {
+            xname[nx] = f; /* (checked against f32 below) */
+            xval[nx++] = x;
             A.k_m = x;
             have_k = 1;
         } else if (strcmp(f, "--z-e") == 0) {
+            xname[nx] = f; /* (checked against f32 below) */
+            xval[nx++] = x;
             A.z_e = x;
         } else if (strcmp(f, "--E0") == 0) {
+            xname[nx] = f; /* (checked against f32 below) */
+            xval[nx++] = x;
             A.E0 = x;
             have_E0 = 1;
         } else if (strcmp(f, "--w0") == 0) {
+            xname[nx] = f; /* (checked against f32 below) */
+            xval[nx++] = x;
             A.w0 = x;
             have_w0 = 1;
         } else if (strcmp(f, "--jobs") == 0) {
@@ -1216,6 +1224,11 @@ static int fit_main(int argc, char **argv)
         for (k = 0; k < np; k++) {
             if (outside_f32(pval[k])) {
                 return usage_errf("%s %.9g: outside the range of --arith f32", pname[k], pval[k]);
+            }
+        }
+        for (k = 0; k < nx; k++) {
+            if (outside_f32(xval[k])) {
+                return usage_errf("%s %.9g: outside the range of --arith f32", xname[k], xval[k]);
             }
         }
     }

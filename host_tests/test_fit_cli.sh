@@ -603,6 +603,20 @@ printf '\357\273\277' | cat - "$TMP/tinynohead.csv" >"$TMP/tinybom.csv"
 expect2 "a label with a double quote" "quote.csv:5: a curve label with a double quote" fit --map "$TMP/quote.csv" $TIP --k-machine 0.2
 { echo z,F; echo 1.9e-6,1e39; tail -n +2 "$TMP/c.csv"; } >"$TMP/big.csv"
 expect2 "beyond float with --arith f32" "big.csv:2: outside the range of --arith f32" fit --curve "$TMP/big.csv" $TIP --k-machine 0.2 --arith f32
+# every number a flag gives is checked against float's range in f32, the
+# machine's and the start values' too (they gave MDR_E_NONFINITE, "input is
+# NaN or infinite", for a finite 1e39, or MDR_E_DEGENERATE, exit 1), before
+# or after --arith; in f64 they are taken (k_m 1e-40 of f64: its own answer)
+for fv in "--k-machine 1e39" "--k-machine 1e-40" "--z-e 1e39" "--z-e 1e-40" "--E0 1e39" "--E0 1e-40" "--w0 1e39" "--w0 1e-40"; do
+    set -- $fv
+    km="--k-machine 0.2"
+    [ "$1" = --k-machine ] && km=""
+    st=""
+    [ "$1" = --E0 ] && st="--w0 0.05"
+    [ "$1" = --w0 ] && st="--E0 1e9"
+    expect2 "$1 $2 in f32" "^mdr: $1 [0-9.e+-]*: outside the range of --arith f32\$" fit --curve "$TMP/c.csv" $TIP $km $fv $st --arith f32
+    expect2 "$1 $2 in f32 (--arith first)" "$1 .*outside the range of --arith f32" fit --arith f32 --curve "$TMP/c.csv" $TIP $km $fv $st
+done
 
 echo "fit cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -64,12 +64,14 @@ def check(code, where, **kw):
 
 
 FLT_MAX = float(np.finfo(np.float32).max)
+FLT_MIN = float(np.finfo(np.float32).tiny)
 
 
 def narrow(arith, where, **values):
     """The values as floats; for f32 a finite value beyond float's range is
     refused (MDR_E_OVERFLOW) instead of becoming inf on the way to C, and
-    one so small that float rounds it to 0 likewise. A bool
+    a nonzero one below float's normal range likewise (0 or losing digits),
+    as the CLI refuses its flags. A bool
     is no number here (k_machine=True is a mistake, not 1 N/m), nor a string
     (R="10e-6" was read as a number, helper-22 at stop 54): TypeError."""
     for name, v in values.items():
@@ -80,11 +82,14 @@ def narrow(arith, where, **values):
         for (name, _), v in zip(values.items(), out):
             if abs(v) > FLT_MAX and v - v == 0:
                 raise Error(lib.MDR_E_OVERFLOW, "%s: %s = %.9g (beyond float)" % (where, name, v), value=v)
-            # (nor a nonzero value that float rounds to 0: k_machine=1e-300
-            # became no machine at all; stop 58)
-            if v != 0 and np.float32(v) == 0:
-                raise Error(lib.MDR_E_OVERFLOW, "%s: %s = %.9g (below float: it would be 0)" % (where, name, v),
-                            value=v)
+            # (nor a nonzero value below float's normal range, as the CLI's
+            # flags: float rounds it to 0, k_machine=1e-300 became no
+            # machine at all, stop 58, or keeps only some of its digits,
+            # 1e-40 as 9.99995e-41)
+            if v != 0 and abs(v) < FLT_MIN:
+                why = "it would be 0" if np.float32(v) == 0 else "subnormal in float: it loses digits"
+                raise Error(lib.MDR_E_OVERFLOW, "%s: %s = %.9g (below float's normal range %.9g: %s)" %
+                            (where, name, v, FLT_MIN, why), value=v)
     return out
 
 

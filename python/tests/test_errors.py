@@ -202,6 +202,19 @@ def test_engine_refusals():
     # a lever so soft that float rounds its stiffness to 0 would be no lever at all (stop 58)
     refused("MDR_E_OVERFLOW", mdr.Engine, c, k_machine=1e-300, arith="f32")
     refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=10e-6, E=1e6, w=1e-300, arith="f32")
+    # a subnormal float keeps only some of its digits (1e-40 as 9.99995e-41): refused as the CLI's
+    # flags are, by name, in f32, the fit's settings too; taken in f64
+    for kw in (dict(k_machine=1e-40), dict(w_adv=1e-40)):
+        e = refused("MDR_E_OVERFLOW", mdr.Engine, c, arith="f32", **kw)
+        assert "subnormal in float" in str(e) and list(kw)[0] in str(e), str(e)
+        mdr.Engine(c, arith="f64", **kw)
+    e = refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=1e-40, E=1e6, w=0.05, arith="f32")
+    assert "R = 1e-40" in str(e), str(e)
+    z = np.linspace(0.0, 1e-8, 50)
+    for kw in (dict(k_machine=1e-40), dict(k_machine=0.2, z_e=1e-40), dict(k_machine=0.2, E0=1e-40, w0=0.05),
+               dict(k_machine=0.2, E0=1e9, w0=1e-40)):
+        e = refused("MDR_E_OVERFLOW", mdr.fit, z, np.zeros_like(z), "paraboloid", R=20e-9, arith="f32", **kw)
+        assert "below float's normal range" in str(e), str(e)
     with pytest.raises(TypeError, match="R must be a number"):
         mdr.Contact("paraboloid", R="10e-6", E=1e6, w=0.05)
     with pytest.raises(TypeError, match="w must be a number"):
