@@ -252,8 +252,7 @@ static long fit_getline(fit_reader *r)
 
 static int fit_bad_line(const fit_reader *r, const char *why)
 {
-    fprintf(stderr, "mdr: %s:%ld: %s\n", r->name, r->line, why);
-    return 2;
+    return usage_errf("%s:%ld: %s", r->name, r->line, why); /* (a name with a line break stays one line) */
 }
 
 /* a blank line or a comment */
@@ -545,9 +544,7 @@ static int fit_curve_cmd(const struct fit_args *A)
         rc = usage_error("no z,F rows in", A->file);
     }
     if (rc == 0 && (bad = fit_order_line(&c)) != 0) {
-        fprintf(stderr, "mdr: %s:%ld: z increases within the retract (the part after the largest z)\n",
-                A->file, bad);
-        rc = 2;
+        rc = usage_errf("%s:%ld: z increases within the retract (the part after the largest z)", A->file, bad);
     }
     if (rc != 0) {
         fit_curve_free(&c);
@@ -1047,12 +1044,12 @@ static int fit_map_cmd(const struct fit_args *A)
         /* MDR_E_ORDER named by its line, as --curve names it (the row's
          * status alone left the user searching the file): one line, the
          * first such curve */
-        fprintf(stderr, "mdr: %s:%ld: curve %s%s (MDR_E_ORDER; %lu curve%s of the map so)\n", A->file, order_line,
-                order_label,
-                order_first ? " (its first row): samples not in time order, z not monotonic within a branch or "
-                              "rising to the last sample"
-                            : ": z increases within the retract (the part after the largest z)",
-                order_n, order_n == 1 ? "" : "s");
+        (void)usage_errf("%s:%ld: curve %s%s (MDR_E_ORDER; %lu curve%s of the map so)", A->file, order_line,
+                         order_label,
+                         order_first ? " (its first row): samples not in time order, z not monotonic within a branch "
+                                       "or rising to the last sample"
+                                     : ": z increases within the retract (the part after the largest z)",
+                         order_n, order_n == 1 ? "" : "s");
     }
     return rc != 0 ? rc : failed > 0;
 }

@@ -603,6 +603,18 @@ printf '\357\273\277' | cat - "$TMP/tinynohead.csv" >"$TMP/tinybom.csv"
 expect2 "a label with a double quote" "quote.csv:5: a curve label with a double quote" fit --map "$TMP/quote.csv" $TIP --k-machine 0.2
 { echo z,F; echo 1.9e-6,1e39; tail -n +2 "$TMP/c.csv"; } >"$TMP/big.csv"
 expect2 "beyond float with --arith f32" "big.csv:2: outside the range of --arith f32" fit --curve "$TMP/big.csv" $TIP --k-machine 0.2 --arith f32
+# a file named with a line break is echoed escaped in every line a bad file
+# gives (fit_bad_line, the retract's and the map's order errors printed it
+# raw: two stderr lines; helper-39's open item of stop 60)
+nl=$(printf '%s/x\ny' "$TMP")
+awk 'NR == 5 { print "x,y"; next } { print }' "$TMP/c.csv" >"$nl.csv"
+expect2 "a bad line of a file named with a line break" 'x\\ny.csv:5: not a number' fit --curve "$nl.csv" $TIP --k-machine 0.2
+awk -F, 'NR == 1800 { printf "%.17g,%s\n", $1 + 1e-9, $2; next } { print }' "$TMP/c.csv" >"$nl.csv"
+expect2 "a retract rising, file named with a line break" 'x\\ny.csv:[0-9]*: z increases within the retract' fit --curve "$nl.csv" $TIP --k-machine 0.2
+awk -F, 'NR == 1 { print "curve,z,F"; next } { print "c0," $0 } END { print "c0,2e-6,0" }' "$TMP/c.csv" >"$nl.csv"
+"$MDR" fit --map "$nl.csv" $TIP --k-machine 0.2 >/dev/null 2>"$TMP/nl.err"
+[ "$(wc -l <"$TMP/nl.err")" -eq 1 ] && grep -q 'x\\ny.csv:[0-9]*: curve c0.*MDR_E_ORDER' "$TMP/nl.err" && ok ||
+    bad "a map's order error, file named with a line break: one line, escaped: $(cat "$TMP/nl.err")"
 # every number a flag gives is checked against float's range in f32, the
 # machine's and the start values' too (they gave MDR_E_NONFINITE, "input is
 # NaN or infinite", for a finite 1e39, or MDR_E_DEGENERATE, exit 1), before
