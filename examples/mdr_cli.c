@@ -113,7 +113,8 @@ static const char *cli_stname(mdr_status st)
 
 static int cli_fail(const char *what, mdr_status st)
 {
-    fprintf(stderr, "mdr: %s: %s (%s, status %d)\n", what, mdr_status_str(st), cli_stname(st), (int)st);
+    /* (through usage_errf: a tip file named with a line break stays one line) */
+    (void)usage_errf("%s: %s (%s, status %d)", what, mdr_status_str(st), cli_stname(st), (int)st);
     return st == MDR_E_NOCONV ? 1 : 2;
 }
 

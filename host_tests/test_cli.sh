@@ -449,6 +449,11 @@ refuse "^mdr: --k-machine: white space around the number" fit --curve "$TMP/tip.
 # a value with a line break is echoed with it escaped: the message stays one line
 refuse '^mdr: --E: not a finite number: 1e9\\nx$' eq --profile paraboloid --R 10e-6 --a 2e-6 --E $'1e9\nx' --w 0.05
 refuse '^mdr: unknown profile: a\\nb$' eq --profile $'a\nb' --E 1e6 --w 0.05 --a 1e-6
+# ... and so is a tip file's name in the library's refusal of its table
+# (cli_fail printed it raw: two lines)
+printf '0,0\n1e-6,1e30\n2e-6,3e37\n' >"$TMP/"$'tip\nx.csv'
+refuse '^mdr: .*tip\\nx.csv: result beyond .*\(MDR_E_OVERFLOW, status -10\)$' eq --profile table --file "$TMP/"$'tip\nx.csv' \
+    --E 1e6 --w 0.05 --a 1e-6
 # a radius outside the domain named by the flag or file it came from (each
 # said "critical: contact radius outside the profile's domain"; an attack
 # after stop 59): --a-start itself, or a tip tabulated short of the pull-off
