@@ -718,7 +718,7 @@ static const char usage_main[] =
     "              (cone: theta is the flank's angle to the sample surface, f = tan(theta) r,\n"
     "              pi/2 minus a tip's half-angle)\n"
     "  <material>: --E ESTAR [Pa, effective modulus] --w W [J/m^2, work of adhesion]\n"
-    "  --arith f32|f64 (default f32; cycle and table also q31)\n"
+    "  --arith f32|f64 (default f32, fit f64; cycle and table also q31)\n"
     "\n"
     "Every flag is --flag VALUE or --flag=VALUE, given once; SI units (m, N, Pa, J/m^2).\n"
     "Results on stdout, errors on stderr (one line). Exit status: 0 ok, 1 a computation\n"
@@ -782,7 +782,7 @@ static const char *const usage_cmd[NCMD] = {
     "  fits E*, w (and the base offset z0, force baseline F_base and its slope\n"
     "  F_slope, held at 0 with --flat-baseline) to a measured\n"
     "  force curve z,F (CSV, --curve: JSON on stdout) or to every curve of a map\n"
-    "  (curve,z,F, --map: CSV on stdout). See docs/fitting.md.\n",
+    "  (curve,z,F, --map: CSV on stdout). --arith: default f64. See docs/fitting.md.\n",
 };
 
 /* --help anywhere, `mdr help [CMD]`, --version: 0, or -1 to go on */
