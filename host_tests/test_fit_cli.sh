@@ -256,7 +256,7 @@ out=$("$MDR" fit --curve "$TMP/short.csv" $TIP --k-machine 0.2 --approach --flat
 # a pinned top: the same cycle with w_adv < w (the retract starts at the
 # approach's largest contact, held until the force meets the receding
 # branch): the fit leaves that part out (n_pinned) and recovers E* and w
-# to 1e-7 (measured 8e-11 at w_adv = w/2; before, E* came out 34 % high)
+# to 1e-7 (measured E* 1.4e-13, w 3.7e-14 at w_adv = w/2, stop 61; before, E* came out 34 % high)
 for wadv in 0.025; do
     "$MDR" cycle $TIP --E 1e9 --w 0.05 --control machine --k-machine 0.2 --path -1e-8,2e-8,-4e-8 \
         --steps-per-segment 1000 --w-adv $wadv --arith f64 --springs 1024 2>/dev/null |
