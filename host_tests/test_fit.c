@@ -1336,6 +1336,33 @@ static void test_bad_input(void **state)
     last = jkr_curve(p, 0.0, 0.0, n, zs, Fs, 0, &Fpo);
     expect_fail(&c, &o, zs, Fs, (uint32_t)last, 2 * NMAX, MDR_E_NOPULLOFF, "never separates (ends in contact)");
     expect_fail(&c, &o, zs, Fs, (uint32_t)last + 3u, 2 * NMAX, MDR_E_NOPULLOFF, "two free points after the jump");
+    /* ... and with noise (1 % of the pull-off force): a curve cut off in
+     * contact at 8 lengths from a quarter of its contact part to all of it,
+     * 6 noise draws each. The scan took the samples after the largest rise
+     * of the noise for the free part, and its line for the baseline:
+     * MDR_E_NOCONTACT for a curve in contact throughout (helper-44, stop 61:
+     * the fit-plot curve cut at 2 600 or 3 000 of its 4 000 rows) */
+    {
+        int cut, draw, nopo = 0, tot = 0;
+        sig = 1e-2 * fabs(Fpo);
+        for (cut = 0; cut < 8; cut++) {
+            const int m = last / 4 + (last - last / 4) * cut / 7 + 1;
+            for (draw = 0; draw < 6; draw++) {
+                mdr_fit_result_f64 r;
+                for (i = 0; i < m; i++) {
+                    Fs[i] = Fm[i] + sig * gauss();
+                }
+                mdr_status st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)m, work64, 2 * NMAX, &r);
+                nopo += st == MDR_E_NOPULLOFF;
+                tot++;
+                if (st != MDR_E_NOPULLOFF) {
+                    print_message("cut off in contact at %d of %d samples, draw %d: status %d\n", m, last + 1, draw,
+                                  (int)st);
+                }
+            }
+        }
+        assert_int_equal(nopo, tot);
+    }
     /* no contact: noise about a baseline */
     sig = 1e-3 * fabs(Fpo);
     for (i = 0; i < n; i++) {

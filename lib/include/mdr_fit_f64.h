@@ -197,7 +197,8 @@ void mdr_fit_defaults_f64(mdr_fit_opts_f64 *o, double k_m);
  *   the curve reversed; docs/fitting.md),
  *   MDR_E_NOCONTACT (no retract force above the baseline
  *   by more than the noise), MDR_E_NOPULLOFF (the curve never separates: no
- *   pull-off jump followed by MDR_FIT_MIN_FREE free points, or no adhesion);
+ *   pull-off jump above the noise followed by MDR_FIT_MIN_FREE free points,
+ *   or no adhesion);
  *   fits that fail: MDR_E_FITCAP (iteration cap, or a pinned top's end not
  *   settled in 8 refits), MDR_E_DEGENERATE (the
  *   data do not determine the parameters: singular equations (also the
