@@ -85,14 +85,18 @@ def python_f32(c32, a, d=None):
         return "refused", m.group(1)
 
 
+def contacts(name):
+    """The scene's CLI options and its f32 and f64 contacts."""
+    opts, params, _, _ = SCENES[name]
+    return opts, mdr.Contact(name, E=E, w=W, arith="f32", **params), mdr.Contact(name, E=E, w=W, **params)
+
+
 @pytest.mark.parametrize("name", sorted(SCENES))
 def test_eq_edges_as_cli(cli, name):
     """At every radius of test_cli.sh's sweep Python refuses where `mdr eq
     --arith f32` refuses (MDR_E_PARAM, the same change named), and where it
     answers both give the same float, within EQ32 of f64."""
-    opts, params, _, _ = SCENES[name]
-    c32 = mdr.Contact(name, E=E, w=W, arith="f32", **params)
-    c64 = mdr.Contact(name, E=E, w=W, **params)
+    opts, c32, c64 = contacts(name)
     n = {"answer": 0, "refused": 0}
     for a_txt in radii(name):
         a = float(a_txt)
@@ -204,9 +208,7 @@ def test_states_as_cli(cli, name):
     %.9g): Python refuses where `mdr eq --d --arith f32` refuses, and an
     accepted F is within ST32 of f64 (Python's F is 2 E* (a d - G(a)), the
     CLI's F_eq + 2 E* a (d - d_eq): the same state, other roundings)."""
-    opts, params, _, _ = SCENES[name]
-    c32 = mdr.Contact(name, E=E, w=W, arith="f32", **params)
-    c64 = mdr.Contact(name, E=E, w=W, **params)
+    opts, c32, c64 = contacts(name)
     n = {"answer": 0, "refused": 0}
     for a_txt in radii(name):
         a = float(a_txt)
