@@ -1164,24 +1164,27 @@ static void table_errors(void **st)
  * that g' leaves out: a fold a fraction of a float's spacing above the node,
  * where either end of the bracket is off by D sqrt(2 r_k u). f32 answered the
  * pull-off of the CLI's 1001-sample tip 4.2e-3 off f64, exit 0 (mdr critical
- * --control grips). Sweep: q 2e-9 .. 5e-8 m, b/L 0 .. 0.22, w 3e-5 ..
- * 3e-4 J/m^2, E* 6.35 MPa, L = 114 um, m = 201, load, grips and a machine;
+ * --control grips). Sweep: q 5e-9, 1e-8, 5e-8 m, b/L 0 and 0.07, w 3e-5
+ * J/m^2, E* 6.35 MPa, L = 114 um, m = 201, load, grips and a machine (15
+ * of its 18 cases failed before the fix; 24 tips, q from 2e-9, b/L to
+ * 0.155, w to 8.98e-5, cost 13 s of the suite for no more);
  * f32 against f64 on the same (float) samples: F and d of the pull-off
  * within REL32 (d relative to max(|d|, dl)), the radius within REL32 and the
- * same jumps. Measured: f32 up to 3.0e-3 off before the fix (mdr_c_atroot),
+ * same jumps. Measured: f32 up to 1.7e-3 off before the fix (mdr_c_atroot),
  * 4.4e-7 after. */
 static void table_quantized_heights_f32(void **st)
 {
-    static const double qs[4] = {2e-9, 5e-9, 1e-8, 5e-8}, bs[3] = {0, 0.07, 0.155}, ws[2] = {3e-5, 8.98e-5};
+    static const double qs[3] = {5e-9, 1e-8, 5e-8}, bs[2] = {0, 0.07};
+    const double w = 3e-5;
     const double L = 1.14e-4, E = 6.35e6;
     const int m = 201;
     double worst = 0;
-    int iq, ib, iw, i;
+    int iq, ib, i;
     (void)st;
-    for (iq = 0; iq < 4; iq++) {
-        for (ib = 0; ib < 3; ib++) {
-            for (iw = 0; iw < 2; iw++) {
-                const double q = qs[iq], b = bs[ib] * L, w = ws[iw];
+    for (iq = 0; iq < 3; iq++) {
+        for (ib = 0; ib < 2; ib++) {
+            {
+                const double q = qs[iq], b = bs[ib] * L;
                 mdr_contact_f64 t;
                 mdr_contact_f32 tf32;
                 for (i = 0; i < m; i++) {
@@ -1221,7 +1224,7 @@ static void table_quantized_heights_f32(void **st)
             }
         }
     }
-    print_message("quantized heights, 24 tips x load, grips, machine: f32 pull-off F, d within %.1e of f64\n", worst);
+    print_message("quantized heights, 6 tips x load, grips, machine: f32 pull-off F, d within %.1e of f64\n", worst);
 }
 
 int main(void)
