@@ -1227,6 +1227,93 @@ static void table_quantized_heights_f32(void **st)
     print_message("quantized heights, 6 tips x load, grips, machine: f32 pull-off F, d within %.1e of f64\n", worst);
 }
 
+/* A sampled paraboloid that ends at its pull-off radius (helper-45, stop
+ * 61): the last sample at a_c (1 + delta), a_c JKR's fold under fixed grips,
+ * a^3 = pi w R^2/(8 E*), or under fixed load, a^3 = 9 pi w R^2/(8 E*),
+ * worked out here; 3, 5 and 17 samples on a uniform and a quadratic grid;
+ * delta from -3e-6 to 3e-6 (f32's rounding of the end) and 0. Where the
+ * fold's slope at the end rounds to 0 the walk saw no sign change below
+ * the start and peeled: a = d = F = 0 with MDR_OK (f32: 96 of 27 000 such
+ * tables, f64: grips at delta = 0). Each answer is MDR_E_RADIUS (the tip
+ * ends before the pull-off) or, from the default start (the last sample),
+ * JKR's pull-off force, -5/6 pi w R (grips),
+ * -3/2 pi w R (load), within REL32 (f32) or 1e-9 (f64: the end itself is
+ * the fold to delta^2); never a = 0. */
+static void table_ends_at_pull_off(void **st)
+{
+    const double R = 10e-6, E = 1e6, w = 0.05;
+    const int ns[3] = {3, 5, 17};
+    int ctl, in, grid, k, i, answered = 0, refused = 0;
+    (void)st;
+    for (ctl = 0; ctl < 2; ctl++) {
+        const uint8_t control = ctl == 0 ? MDR_CONTROL_GRIPS : MDR_CONTROL_LOAD;
+        const double ac = cbrt((ctl == 0 ? 1.0 : 9.0) * M_PI * w * R * R / (8 * E));
+        const double Fpo = -(ctl == 0 ? 5.0 / 6.0 : 1.5) * M_PI * w * R;
+        for (in = 0; in < 3; in++) {
+            for (grid = 0; grid < 2; grid++) {
+                for (k = -6; k <= 6; k++) {
+                    const int n = ns[in];
+                    const double end = ac * (1 + 5e-7 * k);
+                    for (int f32 = 0; f32 < 2; f32++) {
+                        double r[17], f[17], s[16];
+                        float rf[17], sf[16];
+                        mdr_status rc;
+                        double a, F;
+                        for (i = 0; i < n; i++) {
+                            const double x = (double)i / (n - 1);
+                            r[i] = end * (grid == 0 ? x : x * x);
+                            rf[i] = (float)r[i];
+                            if (f32) {
+                                r[i] = rf[i];
+                            }
+                            f[i] = r[i] * r[i] / (2 * R);
+                        }
+                        for (i = 0; i + 1 < n; i++) {
+                            s[i] = (f[i + 1] - f[i]) / (r[i + 1] - r[i]);
+                            sf[i] = (float)s[i];
+                        }
+                        if (f32) {
+                            mdr_contact_f32 t;
+                            mdr_critstate_f32 o;
+                            assert_int_equal(mdr_contact_init_table_f32(&t, rf, sf, (uint16_t)n, (float)E, (float)w),
+                                             MDR_OK);
+                            float a0;
+                            assert_int_equal(mdr_default_start_f32(&t, &a0), MDR_OK);
+                            rc = mdr_critical_f32(&t, control, 0.0f, a0, &o);
+                            a = o.a;
+                            F = o.F;
+                        } else {
+                            mdr_contact_f64 t;
+                            mdr_critstate_f64 o;
+                            assert_int_equal(mdr_contact_init_table_f64(&t, r, s, (uint16_t)n, E, w), MDR_OK);
+                            double a0;
+                            assert_int_equal(mdr_default_start_f64(&t, &a0), MDR_OK);
+                            rc = mdr_critical_f64(&t, control, 0.0, a0, &o);
+                            a = o.a;
+                            F = o.F;
+                        }
+                        if (rc == MDR_E_RADIUS) {
+                            refused++;
+                            continue;
+                        }
+                        if (rc != MDR_OK || !(a > 0) || !(fabs(F / Fpo - 1) <= (f32 ? REL32 : 1e-9))) {
+                            print_message("table to a_c (1 + %g), %d samples, grid %d, %s, control %u: status %d, a %.9g, "
+                                          "F %.9g (JKR %.9g)\n",
+                                          5e-7 * k, n, grid, f32 ? "f32" : "f64", control, (int)rc, a, F, Fpo);
+                        }
+                        assert_int_equal(rc, MDR_OK);
+                        assert_true(a > 0);
+                        rel_le(F, Fpo, 0, f32 ? REL32 : 1e-9, "a table that ends at its pull-off: JKR's force");
+                        answered++;
+                    }
+                }
+            }
+        }
+    }
+    print_message("tables ending at the pull-off radius: %d answered JKR's force, %d MDR_E_RADIUS, none peeled\n",
+                  answered, refused);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1254,6 +1341,7 @@ int main(void)
         cmocka_unit_test(table_critical_vs_profiles),
         cmocka_unit_test(table_f32_height_offset),
         cmocka_unit_test(table_quantized_heights_f32),
+        cmocka_unit_test(table_ends_at_pull_off),
         cmocka_unit_test(table_eq_and_stress),
         cmocka_unit_test(table_errors),
         cmocka_unit_test(pull_off_below_range),
