@@ -709,9 +709,14 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
         /* every row is computed before the first is written (pass 0 only
          * checks): a radius the library refuses part-way (outside the
          * profile's domain, an overflow) is one line on stderr and no
-         * output, as any other refusal */
+         * output, as any other refusal; in f32 pass 0 also refuses a row
+         * that the rounding of its inputs moves beyond f32's accuracy,
+         * from f64 contacts made once (mdr_host_f32_eq_pair) */
         long i;
         int pass;
+        mdr_host_f32_eq_pair x32;
+        const int f32chk =
+            !CLI_F64 && A->kind != KIND_TABLE && mdr_host_f32_eq_pair_init(&x32, A->kind, A->p, A->E, A->w);
         for (pass = 0; pass < 2; pass++) {
             if (pass == 1) {
                 printf("a,d,F\n");
@@ -719,9 +724,8 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
             for (i = 1; i <= A->n; i++) {
                 CLI_SFX(mdr_eqstate) e;
                 CLI_T a = (CLI_T)(A->a_max * (double)i / (double)A->n);
-                if (!CLI_F64 && A->kind != KIND_TABLE && pass == 0) {
-                    const double ch = mdr_host_f32_eq_change(A->kind, A->p, A->E, A->w,
-                                                             A->a_max * (double)i / (double)A->n, NULL);
+                if (f32chk && pass == 0) {
+                    const double ch = mdr_host_f32_eq_pair_change(&x32, A->a_max * (double)i / (double)A->n, NULL);
                     if (ch > MDR_HOST_F32_EQ_MAX) {
                         char row[64];
                         (void)snprintf(row, sizeof row, ", its row %ld (a = %.9g)", i, (double)a);

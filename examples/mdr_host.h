@@ -151,8 +151,7 @@ static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, doubl
 
 /**
  * @brief mdr_host_f32_eq_change() at a (and *d) of contacts already made
- *        (a caller of many radii makes them once: the Python package's
- *        f32 eq, mdrpy_f32_eq_refused in python/src/mdr_py.c).
+ *        (mdr_host_f32_eq_pair).
  * @param c  the f64 contact at the values given (profile, E, w), or NULL
  *           where f64 refuses them
  * @param r  the f64 contact at their roundings to float, or NULL where f64
@@ -183,6 +182,44 @@ static inline double mdr_host_f32_eq_change_c(const mdr_contact_f64 *c, const md
     return ed > eF ? ed : eF;
 }
 
+/* The two f64 contacts of mdr_host_f32_eq_change(): at the values given
+ * (profile, E, w) and at their roundings to float, made once for every
+ * radius of a caller (the CLI's curve rows, the Python package's f32 eq:
+ * mdrpy_f32_eq_refused in python/src/mdr_py.c); cok, rok: f64 takes them */
+typedef struct {
+    mdr_contact_f64 c, r;
+    double E;
+    int cok, rok;
+} mdr_host_f32_eq_pair;
+
+/* false where a parameter, E or w is beyond float (the change is then 0:
+ * the f32 input checks name those) */
+static inline int mdr_host_f32_eq_pair_init(mdr_host_f32_eq_pair *x, uint8_t kind, const double p[3], double E,
+                                            double w)
+{
+    double q[3];
+    int i;
+    for (i = 0; i < 3; i++) {
+        if (!mdr_host_in_float(p[i])) {
+            return 0;
+        }
+        q[i] = mdr_host_f32_round(p[i]);
+    }
+    if (!mdr_host_in_float(E) || !mdr_host_in_float(w)) {
+        return 0;
+    }
+    x->E = E;
+    x->cok = mdr_contact_init_f64(&x->c, kind, p, E, w) == MDR_OK;
+    x->rok = mdr_contact_init_f64(&x->r, kind, q, mdr_host_f32_round(E), mdr_host_f32_round(w)) == MDR_OK;
+    return 1;
+}
+
+/* mdr_host_f32_eq_change() at a (and *d) of the pair x */
+static inline double mdr_host_f32_eq_pair_change(const mdr_host_f32_eq_pair *x, double a, const double *d)
+{
+    return mdr_host_f32_eq_change_c(x->cok ? &x->c : NULL, x->rok ? &x->r : NULL, x->E, a, d);
+}
+
 /**
  * @brief How far f32's rounding of an equilibrium's inputs moves it: the
  *        f64 state at the values given and at their roundings to float
@@ -197,7 +234,8 @@ static inline double mdr_host_f32_eq_change_c(const mdr_contact_f64 *c, const md
  *        b (1 + 1e-7), 1.8e-3 (helper-41, stop 60).
  *        The CLI refuses a change beyond MDR_HOST_F32_EQ_MAX (`eq`, and
  *        each row of `curve`), and so does the Python package's f32
- *        Contact.eq (through mdr_host_f32_eq_change_c()).
+ *        Contact.eq (both through mdr_host_f32_eq_pair: its contacts made
+ *        once for all their radii).
  * @param kind  an analytic profile (not MDR_PROFILE_TABLE)
  * @param d     the state's depth, or NULL: the equilibrium at a
  * @return the larger change of d and F; 0 where a value is beyond float or
@@ -207,21 +245,8 @@ static inline double mdr_host_f32_eq_change_c(const mdr_contact_f64 *c, const md
 static inline double mdr_host_f32_eq_change(uint8_t kind, const double p[3], double E, double w, double a,
                                             const double *d)
 {
-    mdr_contact_f64 c, r;
-    double q[3];
-    int i, cok, rok;
-    for (i = 0; i < 3; i++) {
-        if (!mdr_host_in_float(p[i])) {
-            return 0.0;
-        }
-        q[i] = mdr_host_f32_round(p[i]);
-    }
-    if (!mdr_host_in_float(E) || !mdr_host_in_float(w)) {
-        return 0.0;
-    }
-    cok = mdr_contact_init_f64(&c, kind, p, E, w) == MDR_OK;
-    rok = mdr_contact_init_f64(&r, kind, q, mdr_host_f32_round(E), mdr_host_f32_round(w)) == MDR_OK;
-    return mdr_host_f32_eq_change_c(cok ? &c : NULL, rok ? &r : NULL, E, a, d);
+    mdr_host_f32_eq_pair x;
+    return mdr_host_f32_eq_pair_init(&x, kind, p, E, w) ? mdr_host_f32_eq_pair_change(&x, a, d) : 0.0;
 }
 
 /** The q31 engine with its table and the SI units of its Q formats, in

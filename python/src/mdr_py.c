@@ -39,29 +39,19 @@ static int mdrpy_is_float(double v)
 size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
                             const double *d, double *change)
 {
-    mdr_contact_f64 c, r;
-    double q[3];
-    int cok, rok, exact = mdrpy_is_float(E) && mdrpy_is_float(w);
+    mdr_host_f32_eq_pair x;
+    const int exact = mdrpy_is_float(p[0]) && mdrpy_is_float(p[1]) && mdrpy_is_float(p[2]) && mdrpy_is_float(E) &&
+                      mdrpy_is_float(w);
     size_t i;
-    for (i = 0; i < 3; i++) {
-        if (!mdr_host_in_float(p[i])) {
-            return n; /* (mdr_host_f32_eq_change: 0, the f32 call's case) */
-        }
-        q[i] = mdr_host_f32_round(p[i]);
-        exact = exact && q[i] == p[i];
+    if (!mdr_host_f32_eq_pair_init(&x, kind, p, E, w)) {
+        return n; /* (mdr_host_f32_eq_change: 0, the f32 call's case) */
     }
-    if (!mdr_host_in_float(E) || !mdr_host_in_float(w)) {
-        return n;
-    }
-    /* the two f64 contacts of mdr_host_f32_eq_change(), made once */
-    cok = mdr_contact_init_f64(&c, kind, p, E, w) == MDR_OK;
-    rok = mdr_contact_init_f64(&r, kind, q, mdr_host_f32_round(E), mdr_host_f32_round(w)) == MDR_OK;
     for (i = 0; i < n; i++) {
         double ch;
         if (exact && mdrpy_is_float(a[i]) && (d == NULL || mdrpy_is_float(d[i]))) {
             continue; /* rounded the same: the change is 0 */
         }
-        ch = mdr_host_f32_eq_change_c(cok ? &c : NULL, rok ? &r : NULL, E, a[i], d != NULL ? &d[i] : NULL);
+        ch = mdr_host_f32_eq_pair_change(&x, a[i], d != NULL ? &d[i] : NULL);
         if (ch > MDR_HOST_F32_EQ_MAX) {
             *change = ch;
             return i;
