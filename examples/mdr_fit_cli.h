@@ -1123,9 +1123,9 @@ static int fit_main(int argc, char **argv)
     struct cli_kv kv[CLI_MAX_FLAGS];
     int nkv;
     struct fit_args A;
-    const char *profile = NULL, *pname[3], *xname[4];
-    double pval[3], xval[4];
-    int i, k, np = 0, nx = 0, have_k = 0, have_E0 = 0, have_w0 = 0, pi = -1, used[3] = {0, 0, 0};
+    const char *profile = NULL, *pname[3];
+    double pval[3];
+    int i, k, np = 0, have_k = 0, have_E0 = 0, have_w0 = 0, pi = -1, used[3] = {0, 0, 0};
     long ncpu;
     memset(&A, 0, sizeof A);
     A.f64 = 1;
@@ -1186,22 +1186,14 @@ static int fit_main(int argc, char **argv)
         } else if (is_subnormal(x)) {
             return usage_errf("%s: %s: %s", f, SUBNORMAL_WHY, v);
         } else if (strcmp(f, "--k-machine") == 0) {
-            xname[nx] = f; /* (checked against f32 below) */
-            xval[nx++] = x;
             A.k_m = x;
             have_k = 1;
         } else if (strcmp(f, "--z-e") == 0) {
-            xname[nx] = f; /* (checked against f32 below) */
-            xval[nx++] = x;
             A.z_e = x;
         } else if (strcmp(f, "--E0") == 0) {
-            xname[nx] = f; /* (checked against f32 below) */
-            xval[nx++] = x;
             A.E0 = x;
             have_E0 = 1;
         } else if (strcmp(f, "--w0") == 0) {
-            xname[nx] = f; /* (checked against f32 below) */
-            xval[nx++] = x;
             A.w0 = x;
             have_w0 = 1;
         } else if (strcmp(f, "--jobs") == 0) {
@@ -1223,7 +1215,11 @@ static int fit_main(int argc, char **argv)
                 return usage_errf("%s %.9g: outside the range of --arith f32", pname[k], pval[k]);
             }
         }
-        for (k = 0; k < nx; k++) {
+        /* the machine's and the start's numbers as parsed (z_e: its
+         * default, within float, where not given) */
+        const char *const xname[4] = {"--k-machine", "--z-e", "--E0", "--w0"};
+        const double xval[4] = {A.k_m, A.z_e, A.E0, A.w0};
+        for (k = 0; k < 4; k++) {
             if (outside_f32(xval[k])) {
                 return usage_errf("%s %.9g: outside the range of --arith f32", xname[k], xval[k]);
             }
