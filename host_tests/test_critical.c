@@ -1325,8 +1325,16 @@ static void table_ends_at_pull_off(void **st)
  * dd/da within ARITH_TIP32 of their largest magnitude over the radii.
  * Measured 1.6e-7 at most (F 1.0e-7, 1.6e-7, 9.1e-8; dd/da 1.8e-7). Before
  * (the curvature moments formed as a difference, mdr_a_curv's spacing as
- * one): F 4.4e-5, 6.7e-4 and 4.7e-4 off, dd/da 5.4e-5, 2.5e-4, 1.2e-5. */
+ * one): F 4.4e-5, 6.7e-4 and 4.7e-4 off, dd/da 5.4e-5, 2.5e-4, 1.2e-5.
+ * Open, held from getting worse: mdr_stress on the two 1 000-sample tips
+ * (25 radii, r/a = 0, 0.3, 0.6, 0.9; on the axis the noisy tip is
+ * MDR_E_SINGULAR in both) within STRESS_TIP32 of max|sigma|, measured
+ * 3.5e-5 (quantized) and 1.4e-3 (noisy); the cause is not measured yet
+ * (likely f32's quadrature of the model's g', whose slope has a
+ * 1/sqrt(x - r_k) part above every sample of such a tip, at abscissas
+ * float rounds; docs/accuracy.md). */
 #define ARITH_TIP32 1e-6
+#define STRESS_TIP32 3e-3
 #ifndef MDR_TARGET_TEST
 static void table_measured_tips_f32(void **st)
 {
@@ -1408,6 +1416,32 @@ static void table_measured_tips_f32(void **st)
         }
         print_message("measured tip %d (%d samples): f32 arithmetic F %.2g, d %.2g, dd/da %.2g of max\n", tip, m,
                       worst[0], worst[1], worst[2]);
+        if (m == 1000) {
+            /* stress at 25 radii, r/a = 0, 0.3, 0.6, 0.9: open (its f32
+             * quadrature over the model's rough g'), held below
+             * STRESS_TIP32 */
+            double sm = 0, se = 0;
+            for (i = 0; i < 25; i++) {
+                const float a = (float)(14e-9 * (i + 1) / 25);
+                for (k = 0; k < 4; k++) {
+                    float sg = 0;
+                    double sg64 = 0;
+                    /* (on the axis the noisy tip's f'(0+) is not 0: both
+                     * MDR_E_SINGULAR) */
+                    const mdr_status s32 = mdr_stress_f32(&c32, a, a * (float)(0.3 * k), &sg);
+                    assert_int_equal(mdr_stress_f64(&c64, (double)a, (double)(a * (float)(0.3 * k)), &sg64), s32);
+                    assert_true(s32 == MDR_OK || (k == 0 && s32 == MDR_E_SINGULAR));
+                    got[0][4 * i + k] = sg;
+                    want[0][4 * i + k] = sg64;
+                    sm = fmax(sm, fabs(sg64));
+                }
+            }
+            for (i = 0; i < 100; i++) {
+                se = fmax(se, fabs(got[0][i] - want[0][i]) / sm);
+            }
+            print_message("measured tip %d: f32 stress %.2g of max|sigma| (open)\n", tip, se);
+            assert_true(se <= STRESS_TIP32);
+        }
         for (k = 0; k < 3; k++) {
             assert_true(worst[k] <= ARITH_TIP32);
         }
