@@ -648,17 +648,20 @@ static int CLI_SFX(f32_refuse)(const char *opt, double v, double ch, const char 
     return usage_errf("%s %.15g%s: f32's rounding of the inputs to float %s: --arith f64", opt, v, where, how);
 }
 
-/* eq, critical, curve and stress on the scene's contact */
-static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp)
+/* eq, critical, curve and stress on the scene's contact; x32: the f32
+ * check's f64 contacts (eq and curve in f32), or NULL */
+static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp,
+                                  const mdr_host_f32_eq_pair *x32)
 {
     const CLI_SFX(mdr_contact) c = *cp;
     mdr_status st;
     if (A->cmd == CMD_EQ) {
         CLI_SFX(mdr_eqstate) e;
-        if (!CLI_F64 && A->kind != KIND_TABLE) {
+        if (x32 != NULL) {
             /* a state that f32's rounding of its inputs moves beyond f32's
-             * accuracy (mdr_host_f32_eq_change: the sphere near a = R) */
-            const double ch = mdr_host_f32_eq_change(A->kind, A->p, A->E, A->w, A->a, A->have_d ? &A->d : NULL);
+             * accuracy (mdr_host_f32_eq_change: the sphere near a = R, a
+             * measured tip's samples) */
+            const double ch = mdr_host_f32_eq_pair_change(x32, A->a, A->have_d ? &A->d : NULL);
             if (ch > MDR_HOST_F32_EQ_MAX) {
                 return CLI_SFX(f32_refuse)("--a", A->a, ch, "");
             }
@@ -714,9 +717,7 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
          * from f64 contacts made once (mdr_host_f32_eq_pair) */
         long i;
         int pass;
-        mdr_host_f32_eq_pair x32;
-        const int f32chk =
-            !CLI_F64 && A->kind != KIND_TABLE && mdr_host_f32_eq_pair_init(&x32, A->kind, A->p, A->E, A->w);
+        const int f32chk = x32 != NULL;
         for (pass = 0; pass < 2; pass++) {
             if (pass == 1) {
                 printf("a,d,F\n");
@@ -725,7 +726,7 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
                 CLI_SFX(mdr_eqstate) e;
                 CLI_T a = (CLI_T)(A->a_max * (double)i / (double)A->n);
                 if (f32chk && pass == 0) {
-                    const double ch = mdr_host_f32_eq_pair_change(&x32, A->a_max * (double)i / (double)A->n, NULL);
+                    const double ch = mdr_host_f32_eq_pair_change(x32, A->a_max * (double)i / (double)A->n, NULL);
                     if (ch > MDR_HOST_F32_EQ_MAX) {
                         char row[64];
                         (void)snprintf(row, sizeof row, ", its row %ld (a = %.9g)", i, (double)a);
@@ -830,6 +831,30 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
         }
         return 0;
     }
+}
+
+/* contact_cmd_x with, for eq and curve in f32, the f32 check's f64
+ * contacts: an analytic profile's, or a sampled tip's (the samples'
+ * conversions to float in memory held for the command) */
+static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp)
+{
+    mdr_host_f32_eq_pair x32;
+    double *rd;
+    int rc;
+    if (CLI_F64 || (A->cmd != CMD_EQ && A->cmd != CMD_CURVE)) {
+        return CLI_SFX(contact_cmd_x)(A, cp, NULL);
+    }
+    if (A->kind != KIND_TABLE) {
+        return CLI_SFX(contact_cmd_x)(A, cp, mdr_host_f32_eq_pair_init(&x32, A->kind, A->p, A->E, A->w) ? &x32 : NULL);
+    }
+    rd = malloc(2 * (size_t)A->ntab * sizeof *rd);
+    if (rd == NULL) {
+        return cli_fail("table", MDR_E_SIZE);
+    }
+    rc = CLI_SFX(contact_cmd_x)(
+        A, cp, mdr_host_f32_eq_pair_init_tip(&x32, A->tr, A->ts, (uint16_t)A->ntab, A->E, A->w, rd) ? &x32 : NULL);
+    free(rd);
+    return rc;
 }
 
 static int CLI_SFX(run)(const struct cli_args *A)

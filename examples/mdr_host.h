@@ -214,6 +214,38 @@ static inline int mdr_host_f32_eq_pair_init(mdr_host_f32_eq_pair *x, uint8_t kin
     return 1;
 }
 
+/* The pair of a sampled tip (mdr_host_tip_contact: radii r, slopes s of m
+ * samples, in double): the f64 contact at those, and at their conversions
+ * to float, which the f32 contact holds (rd: caller storage of 2 m values,
+ * kept while the pair is used), with E and w rounded. On a measured tip
+ * f32's arithmetic is within 2e-7 of f64 on the same float samples
+ * (test_critical table_measured_tips_f32), but the conversion itself moves
+ * the model: each radius by up to eps r/2, so the heights beyond a slope
+ * jump (quantized heights) drift by that times the jump, and near a node
+ * the state depends on a - r_k, which float resolves to eps a. A 20 nm
+ * sphere at 1 000 radii with heights quantized to 0.1 nm: 4e-5 of max|F|
+ * (docs/accuracy.md). false (the change is then 0) where a value is beyond
+ * float (the f32 conversion refuses those, MDR_E_OVERFLOW). */
+static inline int mdr_host_f32_eq_pair_init_tip(mdr_host_f32_eq_pair *x, const double *r, const double *s, uint16_t m,
+                                                double E, double w, double *rd)
+{
+    uint16_t i;
+    if (!mdr_host_in_float(E) || !mdr_host_in_float(w)) {
+        return 0;
+    }
+    for (i = 0; i < m; i++) {
+        if (!mdr_host_in_float(r[i]) || (i + 1 < m && !mdr_host_in_float(s[i]))) {
+            return 0;
+        }
+        rd[i] = mdr_host_f32_round(r[i]);
+        rd[m + i] = i + 1 < m ? mdr_host_f32_round(s[i]) : 0.0;
+    }
+    x->E = E;
+    x->cok = mdr_contact_init_table_f64(&x->c, r, s, m, E, w) == MDR_OK;
+    x->rok = mdr_contact_init_table_f64(&x->r, rd, rd + m, m, mdr_host_f32_round(E), mdr_host_f32_round(w)) == MDR_OK;
+    return 1;
+}
+
 /* mdr_host_f32_eq_change() at a (and *d) of the pair x */
 static inline double mdr_host_f32_eq_pair_change(const mdr_host_f32_eq_pair *x, double a, const double *d)
 {

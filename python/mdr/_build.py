@@ -121,6 +121,8 @@ int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], double *change);
 double mdrpy_f32_eq_max(void);
 size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
                             const double *d, double *change);
+size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
+                                const double *a, const double *d, double *change);
 mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
                         uint8_t control, double k_m, const double *path, size_t npath,
                         double *a_max);

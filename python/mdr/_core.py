@@ -123,6 +123,18 @@ def f32_eq(kind, p, E, w, flat):
     return (int(i), float(ch[0])) if i < a.size else None
 
 
+def f32_eq_tip(r, s, E, w, flat):
+    """f32_eq for a sampled tip (Contact('table')): the radii r (float64
+    array) and the slopes s (its cdata, m - 1 doubles formed as the contact
+    formed them) as given and converted to float (mdrpy_f32_eq_refused_tip,
+    the CLI's check of `mdr eq`/`curve --profile table --arith f32`)."""
+    a = flat[0]
+    ch = ffi.new("double *")
+    i = lib.mdrpy_f32_eq_refused_tip(dptr(r), s, r.size, E, w, a.size, dptr(a),
+                                     dptr(flat[1]) if len(flat) > 1 else ffi.NULL, ch)
+    return (int(i), float(ch[0])) if i < a.size else None
+
+
 def f32_eq_error(what, shape, i, change, names, values):
     """mdr.Error (MDR_E_PARAM, as f32_shape: the CLI's usage error, exit 2)
     for point i of f32_eq, named as element_error names it."""

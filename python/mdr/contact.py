@@ -8,8 +8,8 @@ import types
 
 import numpy as np
 
-from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq, f32_eq_error, f32_shape, ffi, lib,
-                    narrow, real_array, shaped, shaped_bool)
+from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq, f32_eq_error, f32_eq_tip,
+                    f32_shape, ffi, lib, narrow, real_array, shaped, shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -200,8 +200,9 @@ class Contact:
         shape, flat = broadcast(what, names, inputs)
         n = flat[0].size
         refused = None
-        if rounding and self.arith == "f32" and self.kind != lib.MDR_PROFILE_TABLE:
-            refused = f32_eq(self.kind, self.p, self.E, self.w, flat)
+        if rounding and self.arith == "f32":
+            refused = (f32_eq_tip(self.r, self._slopes, self.E, self.w, flat) if self.kind == lib.MDR_PROFILE_TABLE
+                       else f32_eq(self.kind, self.p, self.E, self.w, flat))
         out = np.empty((ncols, n))
         flags = np.empty((nflags, n), dtype=np.uint8) if nflags else None
         fail = ffi.new("size_t *")
@@ -229,7 +230,8 @@ class Contact:
         element whose state the rounding of its inputs to float moves by
         more than 1.5e-6 is refused (MDR_E_PARAM), as `mdr eq` and `mdr
         curve --arith f32` refuse it (the sphere near a = R, the flattened
-        tip just above its flat; docs/accuracy.md)."""
+        tip just above its flat, a measured tip whose samples float moves:
+        quantized or noisy heights; docs/accuracy.md)."""
         if d is not None:
             shape, out, _, _ = self._loop("mdrpy_state", "eq", ("a", "d"), (a, d), lib.MDRPY_ST_N, rounding=True)
             return State(**{k: shaped(out[getattr(lib, "MDRPY_ST_" + k.upper())], shape) for k in State.__slots__})

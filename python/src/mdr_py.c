@@ -36,28 +36,56 @@ static int mdrpy_is_float(double v)
     return mdr_host_in_float(v) && mdr_host_f32_round(v) == v;
 }
 
-size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
-                            const double *d, double *change)
+/* the first of the n points (a[i], d[i]) whose change through the pair x
+ * is beyond MDR_HOST_F32_EQ_MAX (*change: it), or n; exact: every input
+ * but the points already a float */
+static size_t mdrpy_f32_eq_first(const mdr_host_f32_eq_pair *x, int exact, size_t n, const double *a, const double *d,
+                                 double *change)
 {
-    mdr_host_f32_eq_pair x;
-    const int exact = mdrpy_is_float(p[0]) && mdrpy_is_float(p[1]) && mdrpy_is_float(p[2]) && mdrpy_is_float(E) &&
-                      mdrpy_is_float(w);
     size_t i;
-    if (!mdr_host_f32_eq_pair_init(&x, kind, p, E, w)) {
-        return n; /* (mdr_host_f32_eq_change: 0, the f32 call's case) */
-    }
     for (i = 0; i < n; i++) {
         double ch;
         if (exact && mdrpy_is_float(a[i]) && (d == NULL || mdrpy_is_float(d[i]))) {
             continue; /* rounded the same: the change is 0 */
         }
-        ch = mdr_host_f32_eq_pair_change(&x, a[i], d != NULL ? &d[i] : NULL);
+        ch = mdr_host_f32_eq_pair_change(x, a[i], d != NULL ? &d[i] : NULL);
         if (ch > MDR_HOST_F32_EQ_MAX) {
             *change = ch;
             return i;
         }
     }
     return n;
+}
+
+size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
+                            const double *d, double *change)
+{
+    mdr_host_f32_eq_pair x;
+    const int exact = mdrpy_is_float(p[0]) && mdrpy_is_float(p[1]) && mdrpy_is_float(p[2]) && mdrpy_is_float(E) &&
+                      mdrpy_is_float(w);
+    if (!mdr_host_f32_eq_pair_init(&x, kind, p, E, w)) {
+        return n; /* (mdr_host_f32_eq_change: 0, the f32 call's case) */
+    }
+    return mdrpy_f32_eq_first(&x, exact, n, a, d, change);
+}
+
+size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
+                                const double *a, const double *d, double *change)
+{
+    mdr_host_f32_eq_pair x;
+    double *rd = malloc(2 * (size_t)m * sizeof *rd);
+    int exact = mdrpy_is_float(E) && mdrpy_is_float(w);
+    size_t i;
+    if (rd == NULL) {
+        *change = DBL_MAX;
+        return 0; /* (refused: the check cannot be made) */
+    }
+    for (i = 0; i < m; i++) {
+        exact = exact && mdrpy_is_float(r[i]) && (i + 1 == m || mdrpy_is_float(s[i]));
+    }
+    i = mdr_host_f32_eq_pair_init_tip(&x, r, s, m, E, w, rd) ? mdrpy_f32_eq_first(&x, exact, n, a, d, change) : n;
+    free(rd);
+    return i;
 }
 
 /* the q31 table from the f64 one and the double init, as `mdr cycle` */

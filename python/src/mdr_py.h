@@ -139,6 +139,18 @@ double mdrpy_f32_eq_max(void);
 size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
                             const double *d, double *change);
 
+/**
+ * @brief mdrpy_f32_eq_refused() for a sampled tip (Contact('table')): the
+ *        f64 states at the radii r and slopes s given (m samples, the
+ *        slopes formed in double as mdrpy_contact_tip forms them) and at
+ *        their conversions to float (mdr_host_f32_eq_pair_init_tip(), as
+ *        `mdr eq`/`curve --profile table --arith f32` check them). Memory
+ *        for the converted samples is taken and freed here; where it is not
+ *        there, point 0 is refused with change DBL_MAX.
+ */
+size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
+                                const double *a, const double *d, double *change);
+
 /* ---- contacts: one set per floating arithmetic (mdr_py_t.h) ---- */
 #define MDR_TEMPLATE "mdr_py_t.h"
 #include "mdr_each_arith.h"

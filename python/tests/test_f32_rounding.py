@@ -10,7 +10,9 @@ f64, the flattened tip at a = b (1 + 1e-6) 2.6e-4). Contact(..., arith=
 "f32").eq calls the same check (mdrpy_f32_eq_refused). The sweeps are
 host_tests/test_cli.sh's: the sphere R = 1 um to a/R = 1 - 1e-1 ... 1e-8,
 the flattened tip R = 1 mm, b = 50 um to a/b = 1 + 1e-1 ... 1e-8, E* = 1
-GPa, w = 0.05 J/m^2, the radii typed as %.9g decimals.
+GPa, w = 0.05 J/m^2, the radii typed as %.9g decimals; and measured tips
+(Contact('table'), mdrpy_f32_eq_refused_tip: the samples' conversion to
+float; a 20 nm sphere at 1 000 radii, heights exact or quantized to 0.1 nm).
 
 Tolerances; the worst error measured by this file in brackets (printed at
 the end of the run):
@@ -227,3 +229,56 @@ def test_states_as_cli(cli, name):
             n[kind] += 1
     # (measured: sphere 50 answered, 8 refused; flattip 56, 2)
     assert n["answer"] > 40 and n["refused"] > 0, n
+
+
+def tip_files(tmp_path):
+    """test_cli.sh's measured tips (stop 62): a 20 nm sphere at 1 000 radii
+    to 15 nm, its heights exact and quantized to 0.1 nm (made monotone), as
+    CSV files and as the arrays read back from them."""
+    R = 20e-9
+    r = 15e-9 * np.arange(1000) / 999
+    h = r * r / (R + np.sqrt(R * R - r * r))
+    q = np.maximum.accumulate(np.floor(h / 1e-10 + 0.5) * 1e-10)
+    out = {}
+    for name, f in (("exact", h), ("quantized", q)):
+        path = tmp_path / ("tip_%s.csv" % name)
+        np.savetxt(path, np.c_[r, f], delimiter=",", fmt="%.17g")
+        rf = np.loadtxt(path, delimiter=",")
+        out[name] = (str(path), rf[:, 0].copy(), rf[:, 1].copy())
+    return out
+
+
+def test_measured_tips_as_cli(cli, tmp_path):
+    """A measured tip in f32 (Contact('table', ..., arith='f32').eq): where
+    converting its samples to float moves a state by more than 1.5e-6 (the
+    quantized heights), Python refuses as `mdr eq --profile table --arith
+    f32` refuses, naming the same change; elsewhere both give the same
+    float, within EQ32 of f64 at the samples as given. The exact heights
+    are answered at every radius."""
+    n = {"answer": 0, "refused": 0}
+    for name, (path, r, f) in tip_files(tmp_path).items():
+        c32 = mdr.Contact("table", E=E, w=W, r=r, f=f, arith="f32")
+        c64 = mdr.Contact("table", E=E, w=W, r=r, f=f)
+        for i in range(1, 31):
+            a_txt = "%.9g" % (14e-9 * i / 30 + 1.7e-12)
+            a = float(a_txt)
+            rc, out, err = run_cli(cli, ["eq", "--profile", "table", "--file", path, "--E", "1e9", "--w", "0.05",
+                                         "--a", a_txt, "--arith", "f32"])
+            kind, got = python_f32(c32, a)
+            if rc == 2:
+                m = REFUSED.match(err.strip())
+                assert m and float(m.group(1)) == a, err
+                assert kind == "refused" and got == m.group(2), (name, a_txt, err, got)
+                assert name == "quantized", (a_txt, err)
+            else:
+                assert rc == 0 and kind == "answer", (name, a_txt, err, got)
+                j = json.loads(out)
+                for k in ("a", "d", "F"):
+                    assert np.float32(j[k]) == np.float32(getattr(got, k)), (name, a_txt, k)
+                ed, eF = err64(c64, a, got.d, got.F)
+                assert within(ed, EQ32, "tip d"), (name, a_txt, ed)
+                assert within(eF, EQ32, "tip F"), (name, a_txt, eF)
+            if name == "quantized":
+                n[kind] += 1
+    # (measured: the quantized tip 6 answered, 24 refused)
+    assert n["answer"] > 0 and n["refused"] > 10, n

@@ -132,9 +132,18 @@ def test_worn_tip_kendall(mat, arith):
             assert within(abs(s.a / b - 1), KEND[arith], "kendall " + arith)
         # (the analytic tip in f64: in f32 its state at a = 1.01 b, b = 10
         # ag, is refused, as `mdr eq --arith f32` refuses it: b and a rounded
-        # to float move it by 3.2e-6)
+        # to float move it by 3.2e-6; the sampled tip's the same since stop
+        # 62, its samples rounded to float with a (3.3e-6, the 1 mm gripper
+        # and the soft AFM tip): refused naming the rounding, and the
+        # radii above it compared)
         ft = mdr.Contact("flattip", E=E, w=w, R=R, b=b)
         a = np.linspace(1.01, 3.9, 100) * b
+        if arith == "f32":
+            try:
+                c.eq(a[0])
+            except mdr.Error as e:
+                assert ratio == 10.0 and e.status == "MDR_E_PARAM" and "f32's rounding of the inputs" in str(e), e
+                a = a[1:]
         assert within(curve_err(c.eq(a).F, ft.eq(a).F), SAMP[arith])
 
 
