@@ -3435,6 +3435,28 @@ static const saddle_curve saddle_slope[] = {
     {3.4442823335991314e-08, 9609079.4978257511, 0.00033849161547895389, 3.7806117985351526e-07, 0.3588034406968576, 0xb42ead85409a787aull},
 };
 
+/* One closed-form curve of the saddle tests: n samples, the fold at of a
+ * step below a sample, noise sig (jkr_grid), fitted with the fold
+ * unpinned and the baseline flat or not; *z0: the curve's */
+static mdr_status saddle_fit(const jkr_par *p, int n, double at, double sig, int flat, double *z0,
+                             mdr_fit_result_f64 *r)
+{
+    mdr_contact_f64 c = paraboloid64(p->R);
+    mdr_fit_opts_f64 o;
+    *z0 = jkr_grid(p, n, at, sig, zs, Fs);
+    mdr_fit_defaults_f64(&o, p->km);
+    o.unpinned = 1;
+    o.flat = (uint8_t)flat;
+    return mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, r);
+}
+
+/* the largest of an answer's distances from the truth in its errors: ln
+ * E*, ln w, z0 */
+static double saddle_dev(const jkr_par *p, const mdr_fit_result_f64 *r, double z0)
+{
+    return fmax(fmax(nerr(r->E, p->E, r->E_err), nerr(r->w, p->w, r->w_err)), fabs(r->z0 - z0) / r->z0_err);
+}
+
 static void saddle_run(const saddle_curve *cv, int ncv, int flat)
 {
     const int n = 300;
@@ -3442,10 +3464,7 @@ static void saddle_run(const saddle_curve *cv, int ncv, int flat)
     int j, i, ok = 0;
     for (j = 0; j < ncv; j++) {
         const jkr_par p = {cv[j].R, cv[j].E, cv[j].w, cv[j].km};
-        mdr_contact_f64 c = paraboloid64(p.R);
-        mdr_fit_opts_f64 o;
         mdr_fit_result_f64 r;
-        mdr_status st;
         double Ff, z0, g2 = 0.0, rms_true;
         (void)jkr_z(&p, jkr_fold(&p), &Ff, NULL);
         noise_state = cv[j].seed; /* the noise jkr_grid draws, one gauss() a sample */
@@ -3455,17 +3474,11 @@ static void saddle_run(const saddle_curve *cv, int ncv, int flat)
         }
         rms_true = SADDLE_SIG * fabs(Ff) * sqrt(g2 / n);
         noise_state = cv[j].seed;
-        z0 = jkr_grid(&p, n, cv[j].at, SADDLE_SIG, zs, Fs);
-        mdr_fit_defaults_f64(&o, p.km);
-        o.unpinned = 1;
-        o.flat = (uint8_t)flat;
-        st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
-        if (st != MDR_OK) {
+        if (saddle_fit(&p, n, cv[j].at, SADDLE_SIG, flat, &z0, &r) != MDR_OK) {
             continue;
         }
         {
-            const double d = fmax(fmax(nerr(r.E, p.E, r.E_err), nerr(r.w, p.w, r.w_err)),
-                                  fabs(r.z0 - z0) / r.z0_err);
+            const double d = saddle_dev(&p, &r, z0);
             print_message("saddle curve %d (%s): w %.4g x the truth, %.2f errors off, rms %.3g of the noise's\n", j,
                           flat ? "flat" : "slope fitted", r.w / p.w, d, r.rms / rms_true);
             if (!(r.rms <= SADDLE_RMS * rms_true) || !(d <= COVER_MAX)) {
@@ -3531,22 +3544,15 @@ static void test_fold_saddle_noise_free(void **state)
     for (j = 0; j < ncv; j++) {
         for (flat = 0; flat < 2; flat++) {
             const jkr_par p = {saddle_nf[j][0], saddle_nf[j][1], saddle_nf[j][2], saddle_nf[j][3]};
-            mdr_contact_f64 c = paraboloid64(p.R);
-            mdr_fit_opts_f64 o;
             mdr_fit_result_f64 r;
-            mdr_status st;
-            const double z0 = jkr_grid(&p, n, saddle_nf[j][4], 0.0, zs, Fs); /* (no noise: noise_state's draws unused) */
-            mdr_fit_defaults_f64(&o, p.km);
-            o.unpinned = 1;
-            o.flat = (uint8_t)flat;
-            st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
-            if (st != MDR_OK) {
+            double z0;
+            /* (no noise: noise_state's draws unused) */
+            if (saddle_fit(&p, n, saddle_nf[j][4], 0.0, flat, &z0, &r) != MDR_OK) {
                 continue;
             }
             ok++;
             {
-                const double d = fmax(fmax(nerr(r.E, p.E, r.E_err), nerr(r.w, p.w, r.w_err)),
-                                      fabs(r.z0 - z0) / r.z0_err);
+                const double d = saddle_dev(&p, &r, z0);
                 const bool rt = fabs(r.E / p.E - 1) <= TOL_RT && fabs(r.w / p.w - 1) <= TOL_RT;
                 print_message("noise-free saddle curve %d (%s): w %.9g x the truth, %.2f errors off\n", j,
                               flat ? "flat" : "slope fitted", r.w / p.w, d);
