@@ -1314,6 +1314,37 @@ static void table_ends_at_pull_off(void **st)
                   answered, refused);
 }
 
+/* A radius far below the first sample (helper-49, stop 62): the piece cut
+ * at x took (r_1 - x)/(2x), which overflows where r_1/x exceeds the
+ * arithmetic's range, and mdr_profile_eval answered MDR_E_OVERFLOW for a g
+ * that is 0 to rounding there (f32: r = 0, 1e-3, 2e-3 mm-scale slopes 0.1,
+ * 0.3, f'(0) = 0 by the curvature, at x = 1e-42 and 1e-44; f64 r = 0, 1, 2
+ * at 1e-309 .. 1e-320). Now MDR_OK with g, g' and G finite and at most
+ * the first interval's slope times x (g' at most its largest slope). */
+static void table_subnormal_radius(void **st)
+{
+    const float rf[3] = {0.0f, 1e-3f, 2e-3f}, sf[2] = {0.1f, 0.3f};
+    const double r[3] = {0.0, 1.0, 2.0}, s[2] = {0.1, 0.3};
+    const float xf[3] = {1e-42f, 3e-42f, 1e-44f};
+    const double xd[4] = {1e-308, 1e-309, 5e-310, 1e-320};
+    mdr_contact_f32 cf;
+    mdr_contact_f64 c;
+    int i;
+    (void)st;
+    assert_int_equal(mdr_contact_init_table_f32(&cf, rf, sf, 3, 1e6f, 0.05f), MDR_OK);
+    assert_int_equal(mdr_contact_init_table_f64(&c, r, s, 3, 1e6, 0.05), MDR_OK);
+    for (i = 0; i < 3; i++) {
+        float g, dg, G;
+        assert_int_equal(mdr_profile_eval_f32(&cf, xf[i], &g, &dg, &G), MDR_OK);
+        assert_true(isfinite(g) && fabsf(g) <= 0.3f * xf[i] && isfinite(dg) && fabsf(dg) <= 0.3f && isfinite(G));
+    }
+    for (i = 0; i < 4; i++) {
+        double g, dg, G;
+        assert_int_equal(mdr_profile_eval_f64(&c, xd[i], &g, &dg, &G), MDR_OK);
+        assert_true(isfinite(g) && fabs(g) <= 0.3 * xd[i] && isfinite(dg) && fabs(dg) <= 0.3 && isfinite(G));
+    }
+}
+
 /* Measured tips in f32: the arithmetic of the Abel model (mdr_abel.inc).
  * A 20 nm sphere sampled to 15 nm, its heights quantized to 0.1 nm (1 000
  * and 16 384 uniform radii), or with 0.02 nm of noise made monotone on
@@ -1476,6 +1507,7 @@ int main(void)
         cmocka_unit_test(table_critical_vs_profiles),
         cmocka_unit_test(table_f32_height_offset),
         cmocka_unit_test(table_quantized_heights_f32),
+        cmocka_unit_test(table_subnormal_radius),
 #ifndef MDR_TARGET_TEST
         cmocka_unit_test(table_measured_tips_f32),
 #endif
