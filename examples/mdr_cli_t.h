@@ -648,6 +648,14 @@ static int CLI_SFX(f32_refuse)(const char *opt, double v, double ch, const char 
     return usage_errf("%s %.15g%s: f32's rounding of the inputs to float %s: --arith f64", opt, v, where, how);
 }
 
+/* An f32 answer refused for its error against f64 at the values given
+ * (mdr_host_f32_eq_pair_err, er beyond MDR_HOST_F32_ANSWER_MAX) */
+static int CLI_SFX(f32_wrong)(const char *opt, double v, double er, const char *where)
+{
+    return usage_errf("%s %.15g%s: f32's answer is %.2g off f64's at the values given (more than %g): --arith f64",
+                      opt, v, where, er, MDR_HOST_F32_ANSWER_MAX);
+}
+
 /* eq, critical, curve and stress on the scene's contact; x32: the f32
  * check's f64 contacts (eq and curve in f32), or NULL */
 static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp,
@@ -684,6 +692,15 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
                 }
                 if (st != MDR_OK) {
                     return cli_fail("--a/--d", st);
+                }
+            }
+            if (x32 != NULL) {
+                /* f32's own error beyond its goal (a coarse table near its
+                 * axis): mdr_host_f32_eq_pair_err */
+                const double er =
+                    mdr_host_f32_eq_pair_err(x32, A->a, A->have_d ? &A->d : NULL, (double)d, (double)F);
+                if (er > MDR_HOST_F32_ANSWER_MAX) {
+                    return CLI_SFX(f32_wrong)("--a", A->a, er, "");
                 }
             }
             json_begin(&j, stdout, CLI_F64);
@@ -736,6 +753,15 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
                 st = CLI_SFX(mdr_eq)(&c, a, &e);
                 if (st != MDR_OK) {
                     return cli_fail("--a-max", st);
+                }
+                if (f32chk && pass == 0) {
+                    const double er = mdr_host_f32_eq_pair_err(x32, A->a_max * (double)i / (double)A->n, NULL,
+                                                               (double)e.d, (double)e.F);
+                    if (er > MDR_HOST_F32_ANSWER_MAX) {
+                        char row[64];
+                        (void)snprintf(row, sizeof row, ", its row %ld (a = %.9g)", i, (double)a);
+                        return CLI_SFX(f32_wrong)("--a-max", A->a_max, er, row);
+                    }
                 }
                 if (pass == 1) {
                     printf(CLI_FMT "," CLI_FMT "," CLI_FMT "\n", (double)e.a, (double)e.d, (double)e.F);

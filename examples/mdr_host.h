@@ -246,6 +246,36 @@ static inline int mdr_host_f32_eq_pair_init_tip(mdr_host_f32_eq_pair *x, const d
     return 1;
 }
 
+/** Above this error (relative, on mdr_host_f32_eq_change()'s scales) an
+ *  f32 equilibrium's answer is refused (mdr_host_f32_eq_pair_err()):
+ *  f32's goal for a state (docs/accuracy.md). */
+#define MDR_HOST_F32_ANSWER_MAX 2e-6
+
+/* How far an f32 answer (d32, F32: computed at the inputs' roundings) lies
+ * from the f64 state at the values given (x's first contact), on
+ * mdr_host_f32_eq_change()'s scales: the rounding's change and f32's own
+ * arithmetic together. The second is within f32's goal on the profiles
+ * and tips the tests sweep, but not everywhere: on a coarse table near its
+ * axis f' is the small difference of an interval's slope and curvature
+ * terms, eps h/a of it in float (5 samples of a 1 mm sphere, a 1.3 % of
+ * the first interval: 9.3e-6 with the rounding's change 2.7e-7; helper-50,
+ * stop 62). The CLI's f32 eq and curve rows and the Python package's f32
+ * Contact.eq refuse an error beyond MDR_HOST_F32_ANSWER_MAX. 0 where f64
+ * refuses the values given (the f32 call names those). */
+static inline double mdr_host_f32_eq_pair_err(const mdr_host_f32_eq_pair *x, double a, const double *d, double d32,
+                                              double F32)
+{
+    double v[4], ed, eF;
+    if (!x->cok || !mdr_host_in_float(a) || !mdr_host_eq64_c(&x->c, x->E, a, d, v)) {
+        return 0.0;
+    }
+    ed = (d32 - v[0]) / v[2];
+    eF = (F32 - v[1]) / v[3];
+    ed = ed < 0.0 ? -ed : ed;
+    eF = eF < 0.0 ? -eF : eF;
+    return ed > eF ? ed : eF;
+}
+
 /* mdr_host_f32_eq_change() at a (and *d) of the pair x */
 static inline double mdr_host_f32_eq_pair_change(const mdr_host_f32_eq_pair *x, double a, const double *d)
 {

@@ -119,10 +119,15 @@ size_t mdrpy_fit_work_len(size_t n);
 double mdr_host_path_value(const double *path, long steps, long seg, long j);
 int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], double *change);
 double mdrpy_f32_eq_max(void);
+double mdrpy_f32_answer_max(void);
 size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
                             const double *d, double *change);
 size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
                                 const double *a, const double *d, double *change);
+size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
+                          const double *d, const double *d32, const double *F32, double *err);
+size_t mdrpy_f32_eq_wrong_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
+                              const double *a, const double *d, const double *d32, const double *F32, double *err);
 mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
                         uint8_t control, double k_m, const double *path, size_t npath,
                         double *a_max);

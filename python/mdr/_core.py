@@ -135,6 +135,36 @@ def f32_eq_tip(r, s, E, w, flat):
     return (int(i), float(ch[0])) if i < a.size else None
 
 
+def f32_wrong(contact, flat, d32, F32):
+    """The CLI's check of an f32 answer of `mdr eq` and each row of `mdr
+    curve` (mdrpy_f32_eq_wrong(_tip): mdr_host_f32_eq_pair_err): (i, error)
+    of the first of the points (flat: a, or a and d) whose f32 answer (d32,
+    F32) lies more than MDR_HOST_F32_ANSWER_MAX from the f64 state at the
+    values given, or None (helper-50, stop 62: a coarse table near its axis
+    answered 9.5e-6 off f64)."""
+    k = d32.size
+    a = np.ascontiguousarray(flat[0][:k])
+    d = np.ascontiguousarray(flat[1][:k]) if len(flat) > 1 else None
+    d32 = np.ascontiguousarray(d32, dtype=np.float64)
+    F32 = np.ascontiguousarray(F32, dtype=np.float64)
+    err = ffi.new("double *")
+    dp = dptr(d) if d is not None else ffi.NULL
+    if contact.kind == lib.MDR_PROFILE_TABLE:
+        i = lib.mdrpy_f32_eq_wrong_tip(dptr(contact.r), contact._slopes, contact.r.size, contact.E, contact.w, k,
+                                       dptr(a), dp, dptr(d32), dptr(F32), err)
+    else:
+        i = lib.mdrpy_f32_eq_wrong(contact.kind, [float(v) for v in contact.p], contact.E, contact.w, k, dptr(a), dp,
+                                   dptr(d32), dptr(F32), err)
+    return (int(i), float(err[0])) if i < k else None
+
+
+def f32_wrong_error(what, shape, i, err, names, values):
+    """mdr.Error (MDR_E_PARAM, as the CLI's exit 2) for point i of f32_wrong."""
+    return element_error(lib.MDR_E_PARAM, what, shape, i, names, values,
+                         hint="f32's answer is %.2g off f64's at the values given (more than %g); use arith='f64'" % (
+                             err, lib.mdrpy_f32_answer_max()))
+
+
 def f32_eq_error(what, shape, i, change, names, values):
     """mdr.Error (MDR_E_PARAM, as f32_shape: the CLI's usage error, exit 2)
     for point i of f32_eq, named as element_error names it."""

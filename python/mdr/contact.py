@@ -9,7 +9,7 @@ import types
 import numpy as np
 
 from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq, f32_eq_error, f32_eq_tip,
-                    f32_shape, ffi, lib, narrow, real_array, shaped, shaped_bool)
+                    f32_shape, f32_wrong, f32_wrong_error, ffi, lib, narrow, real_array, shaped, shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -193,10 +193,11 @@ class Contact:
     def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None, rounding=False):
         """Call the C loop name over the broadcast inputs; (shape, out, flags,
         the flat inputs). rounding: an f32 equilibrium (eq): the points are
-        checked as `mdr eq` and `mdr curve` check theirs (f32_eq), and the
-        first refused point raises after the points before it are computed
-        (a refusal of the library before it is raised first, as the CLI's
-        rows)."""
+        checked as `mdr eq` and `mdr curve` check theirs (f32_eq: the
+        rounding of the inputs; f32_wrong: the answer against f64 at the
+        values given), and the first refused point raises after the points
+        before it are computed (a refusal of the library before it is raised
+        first, as the CLI's rows)."""
         shape, flat = broadcast(what, names, inputs)
         n = flat[0].size
         refused = None
@@ -214,6 +215,16 @@ class Contact:
             st = self._f[name](self._c, m, *args, dptr(out), ffi.from_buffer("uint8_t[]", flags), fail)
         else:
             st = self._f[name](self._c, m, *args, dptr(out), fail)
+        if rounding and self.arith == "f32":
+            k = fail[0] if st != lib.MDR_OK else m  # the points answered
+            cols = out.reshape(-1)[:ncols * m].reshape(ncols, m)  # (the C loop's columns: m values each)
+            if len(flat) == 1:
+                d32, F32 = cols[lib.MDRPY_EQ_D][:k], cols[lib.MDRPY_EQ_F][:k]
+            else:  # a state: its d as the CLI reads it, in float
+                d32, F32 = flat[1][:k].astype(np.float32).astype(np.float64), cols[lib.MDRPY_ST_F][:k]
+            wrong = f32_wrong(self, flat, d32, F32)
+            if wrong is not None:
+                raise f32_wrong_error(what, shape, wrong[0], wrong[1], names, flat)
         if st != lib.MDR_OK:
             raise element_error(st, what, shape, fail[0], names, flat)
         if refused is not None:

@@ -29,6 +29,11 @@ double mdrpy_f32_eq_max(void)
     return MDR_HOST_F32_EQ_MAX;
 }
 
+double mdrpy_f32_answer_max(void)
+{
+    return MDR_HOST_F32_ANSWER_MAX;
+}
+
 /* v held by float exactly (its rounding is v): where every input is, the
  * roundings are the values and mdr_host_f32_eq_change() is 0 */
 static int mdrpy_is_float(double v)
@@ -84,6 +89,48 @@ size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, do
         exact = exact && mdrpy_is_float(r[i]) && (i + 1 == m || mdrpy_is_float(s[i]));
     }
     i = mdr_host_f32_eq_pair_init_tip(&x, r, s, m, E, w, rd) ? mdrpy_f32_eq_first(&x, exact, n, a, d, change) : n;
+    free(rd);
+    return i;
+}
+
+/* the first of the n f32 answers (d32[i], F32[i] at the points (a[i],
+ * d[i])) whose error against the f64 state at the values given through the
+ * pair x is beyond MDR_HOST_F32_ANSWER_MAX (*err: it), or n */
+static size_t mdrpy_f32_wrong_first(const mdr_host_f32_eq_pair *x, size_t n, const double *a, const double *d,
+                                    const double *d32, const double *F32, double *err)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        const double er = mdr_host_f32_eq_pair_err(x, a[i], d != NULL ? &d[i] : NULL, d32[i], F32[i]);
+        if (er > MDR_HOST_F32_ANSWER_MAX) {
+            *err = er;
+            return i;
+        }
+    }
+    return n;
+}
+
+size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
+                          const double *d, const double *d32, const double *F32, double *err)
+{
+    mdr_host_f32_eq_pair x;
+    if (!mdr_host_f32_eq_pair_init(&x, kind, p, E, w)) {
+        return n;
+    }
+    return mdrpy_f32_wrong_first(&x, n, a, d, d32, F32, err);
+}
+
+size_t mdrpy_f32_eq_wrong_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
+                              const double *a, const double *d, const double *d32, const double *F32, double *err)
+{
+    mdr_host_f32_eq_pair x;
+    double *rd = malloc(2 * (size_t)m * sizeof *rd);
+    size_t i;
+    if (rd == NULL) {
+        *err = DBL_MAX;
+        return 0; /* (refused: the check cannot be made) */
+    }
+    i = mdr_host_f32_eq_pair_init_tip(&x, r, s, m, E, w, rd) ? mdrpy_f32_wrong_first(&x, n, a, d, d32, F32, err) : n;
     free(rd);
     return i;
 }

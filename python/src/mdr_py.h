@@ -121,6 +121,8 @@ size_t mdrpy_fit_work_len(size_t n);
 /** The change above which the f32 calls refuse their inputs' rounding
  *  (MDR_HOST_F32_EQ_MAX, examples/mdr_host.h), for the package's messages. */
 double mdrpy_f32_eq_max(void);
+/** The error above which they refuse an f32 answer (MDR_HOST_F32_ANSWER_MAX). */
+double mdrpy_f32_answer_max(void);
 
 /**
  * @brief The CLI's f32 check of `eq` and `curve` over n points: the first i
@@ -150,6 +152,20 @@ size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w,
  */
 size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
                                 const double *a, const double *d, double *change);
+
+/**
+ * @brief The first of n f32 answers beyond MDR_HOST_F32_ANSWER_MAX of the
+ *        f64 state at the values given (mdr_host_f32_eq_pair_err(), as `mdr
+ *        eq` and `curve --arith f32` check theirs): d32[i], F32[i] the f32
+ *        state at (a[i], d[i]) (d NULL: the equilibria), the contact as
+ *        mdrpy_f32_eq_refused() (analytic) or mdrpy_f32_eq_refused_tip()
+ *        (a sampled tip) takes it; *err the refused answer's error.
+ * @return its index, or n
+ */
+size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
+                          const double *d, const double *d32, const double *F32, double *err);
+size_t mdrpy_f32_eq_wrong_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
+                              const double *a, const double *d, const double *d32, const double *F32, double *err);
 
 /* ---- contacts: one set per floating arithmetic (mdr_py_t.h) ---- */
 #define MDR_TEMPLATE "mdr_py_t.h"
