@@ -844,6 +844,14 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
         if (st != MDR_OK) {
             return cli_fail(A->have_d ? "--a/--d/--r" : "--a/--r", st);
         }
+        if (x32 != NULL) {
+            /* f32's stress beyond its goal (a measured tip):
+             * mdr_host_f32_stress_err */
+            const double er = mdr_host_f32_stress_err(x32, A->a, A->have_d ? &A->d : NULL, A->r, (double)sg);
+            if (er > MDR_HOST_F32_ANSWER_MAX) {
+                return CLI_SFX(f32_wrong)("--r", A->r, er, "");
+            }
+        }
         {
             cli_json j;
             json_begin(&j, stdout, CLI_F64);
@@ -859,7 +867,7 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
     }
 }
 
-/* contact_cmd_x with, for eq and curve in f32, the f32 check's f64
+/* contact_cmd_x with, for eq, curve and stress at a in f32, the f32 check's f64
  * contacts: an analytic profile's, or a sampled tip's (the samples'
  * conversions to float in memory held for the command) */
 static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp)
@@ -867,7 +875,7 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
     mdr_host_f32_eq_pair x32;
     double *rd;
     int rc;
-    if (CLI_F64 || (A->cmd != CMD_EQ && A->cmd != CMD_CURVE)) {
+    if (CLI_F64 || (A->cmd != CMD_EQ && A->cmd != CMD_CURVE && (A->cmd != CMD_STRESS || A->have_control))) {
         return CLI_SFX(contact_cmd_x)(A, cp, NULL);
     }
     if (A->kind != KIND_TABLE) {

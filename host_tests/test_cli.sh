@@ -949,6 +949,28 @@ for i in $(seq 0 30); do
     tally "$(eq_f32 1e11 --profile table --file "$TMP/ex5.csv" --w 0.05 --a "$a")" "coarse table, eq --a $a"
 done
 [ $nacc -gt 10 ] && [ $nref -gt 0 ] && ok || bad "coarse table near its axis: $nacc accepted, $nref refused"
+# f32's stress on a measured tip (stop 62): compared with f64's at the
+# values given, relative to the two terms of 4.27 (mdr_host_f32_stress_err),
+# and refused beyond 2e-6: the quantized tip's up to 1e-4 off (measured 36
+# of 40 refused), the exact heights' all answered
+nacc=0
+nref=0
+for i in $(seq 1 10); do
+    a=$(awk -v i="$i" 'BEGIN { printf "%.9g", 14e-9 * i / 10 }')
+    for k in 0 1 2 3; do
+        rr=$(awk -v a="$a" -v k="$k" 'BEGIN { printf "%.9g", a * 0.3 * k }')
+        $MDR stress --profile table --file "$TMP/tipe.csv" --E 1e9 --w 0.05 --a "$a" --r "$rr" >/dev/null &&
+            ok || bad "exact tip, stress --a $a --r $rr in f32"
+        r=$($MDR stress --profile table --file "$TMP/tipq.csv" --E 1e9 --w 0.05 --a "$a" --r "$rr" 2>&1)
+        case $? in
+        0) nacc=$((nacc + 1)) ;;
+        2) printf '%s' "$r" | grep -q "^mdr: --r [0-9.e-]*: f32's answer is [0-9.e-]* off f64's at the values given (more than 2e-06): --arith f64$" &&
+            nref=$((nref + 1)) || bad "quantized tip, stress --a $a --r $rr: $r" ;;
+        *) bad "quantized tip, stress --a $a --r $rr: $r" ;;
+        esac
+    done
+done
+[ $nref -gt 30 ] && ok || bad "quantized tip, stress in f32: $nacc answered, $nref refused"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

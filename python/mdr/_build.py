@@ -124,10 +124,12 @@ size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w,
                             const double *d, double *change);
 size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
                                 const double *a, const double *d, double *change);
-size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
-                          const double *d, const double *d32, const double *F32, double *err);
-size_t mdrpy_f32_eq_wrong_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
-                              const double *a, const double *d, const double *d32, const double *F32, double *err);
+size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                          double w, size_t n, const double *a, const double *d, const double *d32, const double *F32,
+                          double *err);
+size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
+                              double E, double w, size_t n, const double *a, const double *d, const double *rr,
+                              const double *s32, double *err);
 mdr_status mdrpy_extent(uint8_t arith, uint8_t kind, const double p[3], double E, double w,
                         uint8_t control, double k_m, const double *path, size_t npath,
                         double *a_max);

@@ -135,26 +135,28 @@ def f32_eq_tip(r, s, E, w, flat):
     return (int(i), float(ch[0])) if i < a.size else None
 
 
-def f32_wrong(contact, flat, d32, F32):
-    """The CLI's check of an f32 answer of `mdr eq` and each row of `mdr
-    curve` (mdrpy_f32_eq_wrong(_tip): mdr_host_f32_eq_pair_err): (i, error)
-    of the first of the points (flat: a, or a and d) whose f32 answer (d32,
-    F32) lies more than MDR_HOST_F32_ANSWER_MAX from the f64 state at the
-    values given, or None (helper-50, stop 62: a coarse table near its axis
-    answered 9.5e-6 off f64)."""
-    k = d32.size
-    a = np.ascontiguousarray(flat[0][:k])
-    d = np.ascontiguousarray(flat[1][:k]) if len(flat) > 1 else None
-    d32 = np.ascontiguousarray(d32, dtype=np.float64)
+def f32_wrong(contact, flat, d32, F32, stress=False):
+    """The CLI's check of an f32 answer of `mdr eq`, each row of `mdr curve`
+    and `mdr stress --a` (mdrpy_f32_eq_wrong: mdr_host_f32_eq_pair_err;
+    mdrpy_f32_stress_wrong: mdr_host_f32_stress_err): (i, error) of the first
+    of the points (flat: a, or a and d; for the stress a, (d,) r) whose f32
+    answer (d32, F32; the stress: F32 the stresses) lies more than
+    MDR_HOST_F32_ANSWER_MAX from f64's at the values given, or None
+    (helper-50, stop 62: a coarse table near its axis answered 9.5e-6 off
+    f64; a measured tip's stress up to 6e-3)."""
+    k = F32.size
+    pts = [np.ascontiguousarray(v[:k]) for v in flat]
+    a, d = pts[0], (pts[1] if len(pts) > (2 if stress else 1) else None)
     F32 = np.ascontiguousarray(F32, dtype=np.float64)
     err = ffi.new("double *")
-    dp = dptr(d) if d is not None else ffi.NULL
-    if contact.kind == lib.MDR_PROFILE_TABLE:
-        i = lib.mdrpy_f32_eq_wrong_tip(dptr(contact.r), contact._slopes, contact.r.size, contact.E, contact.w, k,
-                                       dptr(a), dp, dptr(d32), dptr(F32), err)
+    tip = contact.kind == lib.MDR_PROFILE_TABLE
+    head = (contact.kind, [float(v) for v in contact.p], dptr(contact.r) if tip else ffi.NULL,
+            contact._slopes if tip else ffi.NULL, contact.r.size if tip else 0, contact.E, contact.w, k, dptr(a),
+            dptr(d) if d is not None else ffi.NULL)
+    if stress:
+        i = lib.mdrpy_f32_stress_wrong(*head, dptr(pts[-1]), dptr(F32), err)
     else:
-        i = lib.mdrpy_f32_eq_wrong(contact.kind, [float(v) for v in contact.p], contact.E, contact.w, k, dptr(a), dp,
-                                   dptr(d32), dptr(F32), err)
+        i = lib.mdrpy_f32_eq_wrong(*head, dptr(np.ascontiguousarray(d32, dtype=np.float64)), dptr(F32), err)
     return (int(i), float(err[0])) if i < k else None
 
 

@@ -190,14 +190,15 @@ class Contact:
     def __repr__(self):
         return "mdr.Contact(%r, %s, arith=%r)" % (self.profile, self._args(), self.arith)
 
-    def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None, rounding=False):
+    def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None, rounding=False, answer=False):
         """Call the C loop name over the broadcast inputs; (shape, out, flags,
         the flat inputs). rounding: an f32 equilibrium (eq): the points are
         checked as `mdr eq` and `mdr curve` check theirs (f32_eq: the
         rounding of the inputs; f32_wrong: the answer against f64 at the
         values given), and the first refused point raises after the points
         before it are computed (a refusal of the library before it is raised
-        first, as the CLI's rows)."""
+        first, as the CLI's rows). answer: a stress, whose f32 answer is
+        checked as `mdr stress --a` checks it (f32_wrong)."""
         shape, flat = broadcast(what, names, inputs)
         n = flat[0].size
         refused = None
@@ -215,14 +216,16 @@ class Contact:
             st = self._f[name](self._c, m, *args, dptr(out), ffi.from_buffer("uint8_t[]", flags), fail)
         else:
             st = self._f[name](self._c, m, *args, dptr(out), fail)
-        if rounding and self.arith == "f32":
+        if (rounding or answer) and self.arith == "f32":
             k = fail[0] if st != lib.MDR_OK else m  # the points answered
             cols = out.reshape(-1)[:ncols * m].reshape(ncols, m)  # (the C loop's columns: m values each)
-            if len(flat) == 1:
+            if answer:
+                d32, F32 = None, cols[0][:k]
+            elif len(flat) == 1:
                 d32, F32 = cols[lib.MDRPY_EQ_D][:k], cols[lib.MDRPY_EQ_F][:k]
             else:  # a state: its d as the CLI reads it, in float
                 d32, F32 = flat[1][:k].astype(np.float32).astype(np.float64), cols[lib.MDRPY_ST_F][:k]
-            wrong = f32_wrong(self, flat, d32, F32)
+            wrong = f32_wrong(self, flat, d32, F32, stress=answer)
             if wrong is not None:
                 raise f32_wrong_error(what, shape, wrong[0], wrong[1], names, flat)
         if st != lib.MDR_OK:
@@ -256,11 +259,15 @@ class Contact:
     def stress(self, a, r, d=None):
         """Normal stress sigma_zz [Pa] at radial positions r [m], 0 <= r < a,
         in the equilibrium contact of radius a [m] (4.27), or held at depth d
-        [m]; negative in compression. a, r (and d) broadcast together."""
+        [m]; negative in compression. a, r (and d) broadcast together. In
+        f32 an element whose stress lies more than 2e-6 (of the two terms
+        of 4.27) from f64's at the values given is refused, MDR_E_PARAM, as
+        `mdr stress --arith f32` refuses it (a measured tip's, quantized or
+        noisy heights: up to 6e-3 off; docs/accuracy.md)."""
         if d is None:
-            shape, out, _, _ = self._loop("mdrpy_stress", "stress", ("a", "r"), (a, r), 1, nullable=1)
+            shape, out, _, _ = self._loop("mdrpy_stress", "stress", ("a", "r"), (a, r), 1, nullable=1, answer=True)
         else:
-            shape, out, _, _ = self._loop("mdrpy_stress", "stress", ("a", "d", "r"), (a, d, r), 1)
+            shape, out, _, _ = self._loop("mdrpy_stress", "stress", ("a", "d", "r"), (a, d, r), 1, answer=True)
         return shaped(out[0], shape)
 
     def equivalent(self, x):

@@ -93,44 +93,70 @@ size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, do
     return i;
 }
 
-/* the first of the n f32 answers (d32[i], F32[i] at the points (a[i],
- * d[i])) whose error against the f64 state at the values given through the
- * pair x is beyond MDR_HOST_F32_ANSWER_MAX (*err: it), or n */
-static size_t mdrpy_f32_wrong_first(const mdr_host_f32_eq_pair *x, size_t n, const double *a, const double *d,
-                                    const double *d32, const double *F32, double *err)
+/* The pair of mdrpy_f32_eq_wrong and mdrpy_f32_stress_wrong: a sampled
+ * tip's (r not NULL: m radii, the slopes s, their conversions in *rd,
+ * malloc'd here, the caller frees it) or an analytic profile's (kind, p).
+ * -1: no memory; 0: no check (a value beyond float); 1: made. */
+static int mdrpy_f32_pair(mdr_host_f32_eq_pair *x, uint8_t kind, const double p[3], const double *r, const double *s,
+                          uint16_t m, double E, double w, double **rd)
 {
-    size_t i;
-    for (i = 0; i < n; i++) {
-        const double er = mdr_host_f32_eq_pair_err(x, a[i], d != NULL ? &d[i] : NULL, d32[i], F32[i]);
-        if (er > MDR_HOST_F32_ANSWER_MAX) {
-            *err = er;
-            return i;
-        }
+    *rd = NULL;
+    if (r == NULL) {
+        return mdr_host_f32_eq_pair_init(x, kind, p, E, w);
     }
-    return n;
+    *rd = malloc(2 * (size_t)m * sizeof **rd);
+    if (*rd == NULL) {
+        return -1;
+    }
+    return mdr_host_f32_eq_pair_init_tip(x, r, s, m, E, w, *rd);
 }
 
-size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
-                          const double *d, const double *d32, const double *F32, double *err)
+size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                          double w, size_t n, const double *a, const double *d, const double *d32, const double *F32,
+                          double *err)
 {
     mdr_host_f32_eq_pair x;
-    if (!mdr_host_f32_eq_pair_init(&x, kind, p, E, w)) {
-        return n;
-    }
-    return mdrpy_f32_wrong_first(&x, n, a, d, d32, F32, err);
-}
-
-size_t mdrpy_f32_eq_wrong_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
-                              const double *a, const double *d, const double *d32, const double *F32, double *err)
-{
-    mdr_host_f32_eq_pair x;
-    double *rd = malloc(2 * (size_t)m * sizeof *rd);
-    size_t i;
-    if (rd == NULL) {
+    double *rd;
+    size_t i = n;
+    const int ok = mdrpy_f32_pair(&x, kind, p, r, s, m, E, w, &rd);
+    if (ok < 0) {
         *err = DBL_MAX;
         return 0; /* (refused: the check cannot be made) */
     }
-    i = mdr_host_f32_eq_pair_init_tip(&x, r, s, m, E, w, rd) ? mdrpy_f32_wrong_first(&x, n, a, d, d32, F32, err) : n;
+    if (ok) {
+        for (i = 0; i < n; i++) {
+            const double er = mdr_host_f32_eq_pair_err(&x, a[i], d != NULL ? &d[i] : NULL, d32[i], F32[i]);
+            if (er > MDR_HOST_F32_ANSWER_MAX) {
+                *err = er;
+                break;
+            }
+        }
+    }
+    free(rd);
+    return i;
+}
+
+size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
+                              double E, double w, size_t n, const double *a, const double *d, const double *rr,
+                              const double *s32, double *err)
+{
+    mdr_host_f32_eq_pair x;
+    double *rd;
+    size_t i = n;
+    const int ok = mdrpy_f32_pair(&x, kind, p, r, s, m, E, w, &rd);
+    if (ok < 0) {
+        *err = DBL_MAX;
+        return 0;
+    }
+    if (ok) {
+        for (i = 0; i < n; i++) {
+            const double er = mdr_host_f32_stress_err(&x, a[i], d != NULL ? &d[i] : NULL, rr[i], s32[i]);
+            if (er > MDR_HOST_F32_ANSWER_MAX) {
+                *err = er;
+                break;
+            }
+        }
+    }
     free(rd);
     return i;
 }

@@ -157,15 +157,21 @@ size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, do
  * @brief The first of n f32 answers beyond MDR_HOST_F32_ANSWER_MAX of the
  *        f64 state at the values given (mdr_host_f32_eq_pair_err(), as `mdr
  *        eq` and `curve --arith f32` check theirs): d32[i], F32[i] the f32
- *        state at (a[i], d[i]) (d NULL: the equilibria), the contact as
- *        mdrpy_f32_eq_refused() (analytic) or mdrpy_f32_eq_refused_tip()
- *        (a sampled tip) takes it; *err the refused answer's error.
+ *        state at (a[i], d[i]) (d NULL: the equilibria); the contact a
+ *        sampled tip's (r not NULL: m radii r, slopes s, as
+ *        mdrpy_f32_eq_refused_tip() takes them) or else the analytic
+ *        (kind, p); *err the refused answer's error. Where memory for a
+ *        tip's converted samples is not there, point 0 with DBL_MAX.
+ *        mdrpy_f32_stress_wrong(): the same for the f32 stresses s32[i] at
+ *        rr[i] (mdr_host_f32_stress_err(), as `mdr stress --a` checks it).
  * @return its index, or n
  */
-size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
-                          const double *d, const double *d32, const double *F32, double *err);
-size_t mdrpy_f32_eq_wrong_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
-                              const double *a, const double *d, const double *d32, const double *F32, double *err);
+size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                          double w, size_t n, const double *a, const double *d, const double *d32, const double *F32,
+                          double *err);
+size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
+                              double E, double w, size_t n, const double *a, const double *d, const double *rr,
+                              const double *s32, double *err);
 
 /* ---- contacts: one set per floating arithmetic (mdr_py_t.h) ---- */
 #define MDR_TEMPLATE "mdr_py_t.h"

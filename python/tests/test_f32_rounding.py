@@ -335,3 +335,50 @@ def test_coarse_tip_as_cli(cli, tmp_path):
         n[kind] += 1
     # (measured: 27 answered, 4 refused, up to 2.6e-5 off)
     assert n["answer"] > 20 and n["refused"] > 0, n
+
+
+STRESS_WRONG = re.compile(r"^mdr: --r (\S+): f32's answer is (\S+) off f64's at the values given \(more than "
+                          r"2e-06\): --arith f64$")
+
+
+def test_stress_as_cli(cli, tmp_path):
+    """f32's stress (stop 62): compared with f64's at the values given,
+    relative to the two terms of 4.27 (mdr_host_f32_stress_err), and refused
+    beyond 2e-6, by `mdr stress --arith f32` and Contact.stress alike, the
+    same error named, the same float where answered. A paraboloid (R = 1 um)
+    at a = 0.5 um, r/a from 0 to 0.9999 (near the edge the rounding of a and
+    r alone moves it; measured: 0 to 0.99 answered, 0.999 (4.9e-6 off) and
+    0.9999 refused), and the quantized measured tip at 10 radii x r/a = 0,
+    0.3, 0.6, 0.9 (up to 1e-4 off; measured: 36 of 40 refused)."""
+    tips = tip_files(tmp_path)
+    cases = [(["--profile", "paraboloid", "--R", "1e-6"], mdr.Contact("paraboloid", E=E, w=W, R=1e-6, arith="f32"),
+              "5e-07",
+              ["%.9g" % (0.5e-6 * q) for q in (0, 0.3, 0.6, 0.9, 0.95, 0.99, 0.999, 0.9999)])]
+    path, r, f = tips["quantized"]
+    cq = mdr.Contact("table", E=E, w=W, r=r, f=f, arith="f32")
+    for i in range(1, 11):
+        a_txt = "%.9g" % (14e-9 * i / 10)
+        cases.append((["--profile", "table", "--file", path], cq, a_txt,
+                      ["%.9g" % (float(a_txt) * 0.3 * k) for k in range(4)]))
+    n = {"paraboloid": {"answer": 0, "refused": 0}, "table": {"answer": 0, "refused": 0}}
+    for opts, c32, a_txt, rs in cases:
+        for r_txt in rs:
+            rc, out, err = run_cli(cli, ["stress"] + opts + ["--E", "1e9", "--w", "0.05", "--a", a_txt, "--r", r_txt,
+                                                             "--arith", "f32"])
+            try:
+                got, kind = c32.stress(float(a_txt), float(r_txt)), "answer"
+            except mdr.Error as e:
+                m = re.search(r"f32's answer is (\S+) off f64's at the values given \(more than 2e-06\); use "
+                              r"arith='f64'$", str(e))
+                assert e.status == "MDR_E_PARAM" and m, str(e)
+                got, kind = m.group(1), "refused"
+            if rc == 2:
+                m = STRESS_WRONG.match(err.strip())
+                assert m and float(m.group(1)) == float(r_txt), err
+                assert kind == "refused" and got == m.group(2), (a_txt, r_txt, err, got)
+            else:
+                assert rc == 0 and kind == "answer", (a_txt, r_txt, err, got)
+                assert np.float32(json.loads(out)["sigma"]) == np.float32(got), (a_txt, r_txt)
+            n[opts[1]][kind] += 1
+    assert n["paraboloid"]["answer"] >= 5 and n["paraboloid"]["refused"] >= 1, n
+    assert n["table"]["refused"] > 30, n

@@ -89,7 +89,11 @@ def test_sampled_paraboloid(mat, arith, spacing):
         A, D = np.meshgrid(a[::10], np.linspace(-2, 2, 9) * (ac**2 / R))
         s, sp = c.eq(A, d=D), p.eq(A, d=D)
         assert within(curve_err(s.F, sp.F), tol) and within(curve_err(s.K_I, sp.K_I), tol)
-        rr = np.linspace(0, 0.999, 50) * ac
+        # (in f32 to r = 0.95 a: nearer the edge the rounding of a and r to
+        # float alone moves the stress beyond f32's 2e-6, 2.6e-5 at 0.999 a,
+        # and f32 refuses it since stop 62, test_f32_rounding.py
+        # test_stress_as_cli)
+        rr = np.linspace(0, 0.999 if arith == "f64" else 0.95, 50) * ac
         assert within(curve_err(c.stress(ac, rr), p.stress(ac, rr)), tol)
         assert within(curve_err(c.stress(ac, rr, d=0.3 * ac**2 / R), p.stress(ac, rr, d=0.3 * ac**2 / R)), tol)
         assert within(curve_err(c.equivalent(a).G, a**3 / (3 * R)), tol)
