@@ -111,9 +111,11 @@ static int mdrpy_f32_pair(mdr_host_f32_eq_pair *x, uint8_t kind, const double p[
     return mdr_host_f32_eq_pair_init_tip(x, r, s, m, E, w, *rd);
 }
 
-size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
-                          double w, size_t n, const double *a, const double *d, const double *d32, const double *F32,
-                          double *err)
+/* mdrpy_f32_eq_wrong (rr NULL: the states' d32, F32) and
+ * mdrpy_f32_stress_wrong (the stresses F32 at rr), written once */
+static size_t mdrpy_f32_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                              double w, size_t n, const double *a, const double *d, const double *rr,
+                              const double *d32, const double *F32, double *err)
 {
     mdr_host_f32_eq_pair x;
     double *rd;
@@ -125,7 +127,9 @@ size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, cons
     }
     if (ok) {
         for (i = 0; i < n; i++) {
-            const double er = mdr_host_f32_eq_pair_err(&x, a[i], d != NULL ? &d[i] : NULL, d32[i], F32[i]);
+            const double *di = d != NULL ? &d[i] : NULL;
+            const double er = rr != NULL ? mdr_host_f32_stress_err(&x, a[i], di, rr[i], F32[i])
+                                         : mdr_host_f32_eq_pair_err(&x, a[i], di, d32[i], F32[i]);
             if (er > MDR_HOST_F32_ANSWER_MAX) {
                 *err = er;
                 break;
@@ -136,29 +140,18 @@ size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, cons
     return i;
 }
 
+size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                          double w, size_t n, const double *a, const double *d, const double *d32, const double *F32,
+                          double *err)
+{
+    return mdrpy_f32_wrong(kind, p, r, s, m, E, w, n, a, d, NULL, d32, F32, err);
+}
+
 size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
                               double E, double w, size_t n, const double *a, const double *d, const double *rr,
                               const double *s32, double *err)
 {
-    mdr_host_f32_eq_pair x;
-    double *rd;
-    size_t i = n;
-    const int ok = mdrpy_f32_pair(&x, kind, p, r, s, m, E, w, &rd);
-    if (ok < 0) {
-        *err = DBL_MAX;
-        return 0;
-    }
-    if (ok) {
-        for (i = 0; i < n; i++) {
-            const double er = mdr_host_f32_stress_err(&x, a[i], d != NULL ? &d[i] : NULL, rr[i], s32[i]);
-            if (er > MDR_HOST_F32_ANSWER_MAX) {
-                *err = er;
-                break;
-            }
-        }
-    }
-    free(rd);
-    return i;
+    return mdrpy_f32_wrong(kind, p, r, s, m, E, w, n, a, d, rr, NULL, s32, err);
 }
 
 /* the q31 table from the f64 one and the double init, as `mdr cycle` */
