@@ -16,9 +16,9 @@ mdr_status MDR_SFX(mdrpy_eq)(const MDR_SFX(mdr_contact) *c, size_t n, const doub
                              uint8_t *flags, size_t *fail);
 
 /**
- * @brief Any state (a[i], d[i]), pinned or not: F = 2E*(a d - G(a)) with
- *        G(a) from mdr_profile_eval(), K_I and G from
- *        mdr_stress_intensity().
+ * @brief Any state (a[i], d[i]), pinned or not, as `mdr eq --d` gives it:
+ *        F = F_eq + 2E* a (d - d_eq) (= 2E*(a d - G(a)), 4.26) from
+ *        mdr_eq() at a, K_I and G from mdr_stress_intensity().
  * @param out  [MDRPY_ST_N][n]: a, d, F, K_I, G
  * @return MDR_OK, the library's status, MDR_E_OVERFLOW (F beyond range)
  */
