@@ -803,6 +803,17 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
         if (st != MDR_OK) {
             return cli_fail("critical", st);
         }
+        if (x32 != NULL && A->cmd == CMD_CRITICAL) {
+            /* f32's critical state beyond its tolerance against f64's
+             * (a measured tip): mdr_host_f32_crit_err */
+            const double er = mdr_host_f32_crit_err(x32, A->control, A->k_m, A->have_a_start ? &A->a_start : NULL,
+                                                    (double)o.a, (double)o.d, (double)o.F, (double)o.F_min);
+            if (er > MDR_HOST_F32_CRIT_MAX) {
+                return usage_errf("critical: f32's critical state is %.2g off f64's at the values given (more than "
+                                  "%g): --arith f64",
+                                  er, MDR_HOST_F32_CRIT_MAX);
+            }
+        }
         if (A->cmd == CMD_CRITICAL) {
             cli_json j;
             json_begin(&j, stdout, CLI_F64);
@@ -875,7 +886,8 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
     mdr_host_f32_eq_pair x32;
     double *rd;
     int rc;
-    if (CLI_F64 || (A->cmd != CMD_EQ && A->cmd != CMD_CURVE && (A->cmd != CMD_STRESS || A->have_control))) {
+    if (CLI_F64 || (A->cmd != CMD_EQ && A->cmd != CMD_CURVE && A->cmd != CMD_CRITICAL &&
+                    (A->cmd != CMD_STRESS || A->have_control))) {
         return CLI_SFX(contact_cmd_x)(A, cp, NULL);
     }
     if (A->kind != KIND_TABLE) {

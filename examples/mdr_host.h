@@ -303,6 +303,50 @@ static inline double mdr_host_f32_stress_err(const mdr_host_f32_eq_pair *x, doub
     return er < 0.0 ? -er : er;
 }
 
+/** Above this error an f32 critical state is refused
+ *  (mdr_host_f32_crit_err()): the critical search's f32 tolerance
+ *  (host_tests/test_critical.c REL32; its sweep's worst 2.5e-6). */
+#define MDR_HOST_F32_CRIT_MAX 3e-6
+
+/* How far an f32 critical state (a32, d32, F32 and the most tensile force
+ * Fm32: mdr_critical at the inputs' roundings) lies from f64's at the
+ * values given, from the start *a0 as given (NULL: f64's default start; the
+ * f32 one, the last radius rounded, can lie beyond f64's table): a relative to itself, d to
+ * max(|d|, dl), F to max(|F|, 2 E* a dl) (dl at f64's a), the most tensile
+ * force to the larger of that and its own size. 5 exact samples of a 1 mm
+ * sphere to 0.75 mm, E* 1e11, w 0.05, pull off at 2.4 % of the first
+ * interval, where f32's eq misses its goal (mdr_host_f32_eq_pair_err): its
+ * most tensile force 3.4e-6 off (stop 62). The CLI's f32 `critical` and the Python package's f32
+ * Contact.critical refuse an error beyond MDR_HOST_F32_CRIT_MAX. 0 where f64
+ * refuses (the f32 answer stands). */
+static inline double mdr_host_f32_crit_err(const mdr_host_f32_eq_pair *x, uint8_t control, double k_m,
+                                           const double *a0, double a32, double d32, double F32, double Fm32)
+{
+    mdr_critstate_f64 o;
+    mdr_eqstate_f64 e;
+    double ea, ed, eF, eM, sd, sF, s0 = 0.0;
+    if (!x->cok || (a0 == NULL && mdr_default_start_f64(&x->c, &s0) != MDR_OK) ||
+        mdr_critical_f64(&x->c, control, k_m, a0 != NULL ? *a0 : s0, &o) != MDR_OK) {
+        return 0.0;
+    }
+    if (o.a == 0.0) { /* (no contact at the end: compared as is) */
+        ea = a32 != 0.0 ? 1.0 : 0.0;
+        return ea;
+    }
+    if (mdr_eq_f64(&x->c, o.a, &e) != MDR_OK) {
+        return 0.0;
+    }
+    sd = fabs(o.d) > e.dl ? fabs(o.d) : e.dl;
+    sF = fabs(o.F) > 2.0 * x->E * o.a * e.dl ? fabs(o.F) : 2.0 * x->E * o.a * e.dl;
+    ea = fabs(a32 - o.a) / o.a;
+    ed = fabs(d32 - o.d) / sd;
+    eF = fabs(F32 - o.F) / sF;
+    eM = fabs(Fm32 - o.F_min) / (fabs(o.F_min) > sF ? fabs(o.F_min) : sF);
+    ea = ea > ed ? ea : ed;
+    eF = eF > eM ? eF : eM;
+    return ea > eF ? ea : eF;
+}
+
 /* mdr_host_f32_eq_change() at a (and *d) of the pair x */
 static inline double mdr_host_f32_eq_pair_change(const mdr_host_f32_eq_pair *x, double a, const double *d)
 {

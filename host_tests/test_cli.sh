@@ -949,6 +949,21 @@ for i in $(seq 0 30); do
     tally "$(eq_f32 1e11 --profile table --file "$TMP/ex5.csv" --w 0.05 --a "$a")" "coarse table, eq --a $a"
 done
 [ $nacc -gt 10 ] && [ $nref -gt 0 ] && ok || bad "coarse table near its axis: $nacc accepted, $nref refused"
+# f32's critical state against f64's at the values given (stop 62,
+# mdr_host_f32_crit_err: a, d, F and the most tensile force, within 3e-6):
+# the coarse table's pull-off lies at 2.4 % of its first interval, its most
+# tensile force 3.4e-6 off in f32 (exit 0 before): refused under load, grips
+# and a machine; f64 answers
+for ctl in "load" "grips" "machine --k-machine 1"; do
+    # shellcheck disable=SC2086
+    r=$($MDR critical --profile table --file "$TMP/ex5.csv" --E 1e11 --w 0.05 --control $ctl 2>&1)
+    [ $? -eq 2 ] && printf '%s' "$r" |
+        grep -q "^mdr: critical: f32's critical state is [0-9.e-]* off f64's at the values given (more than 3e-06): --arith f64$" &&
+        ok || bad "coarse table, critical --control $ctl in f32: $r"
+    # shellcheck disable=SC2086
+    $MDR critical --profile table --file "$TMP/ex5.csv" --E 1e11 --w 0.05 --control $ctl --arith f64 >/dev/null &&
+        ok || bad "coarse table, critical --control $ctl in f64"
+done
 # f32's stress on a measured tip (stop 62): compared with f64's at the
 # values given, relative to the two terms of 4.27 (mdr_host_f32_stress_err),
 # and refused beyond 2e-6: the quantized tip's up to 1e-4 off (measured 36

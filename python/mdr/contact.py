@@ -295,13 +295,26 @@ class Contact:
         if k_machine is not None and ctl != lib.MDR_CONTROL_MACHINE:
             # (echoed and ignored before stop 56; mdr critical refuses it too)
             raise TypeError("critical: k_machine is the machine's stiffness; control %r takes none" % (control,))
+        given = a_start
         if a_start is None:
             a_start = self.default_start()
         k, a_start = narrow(self.arith, "critical", k_machine=0.0 if k_machine is None else k_machine,
                             a_start=a_start)
         out = ffi.new("mdr_critstate_%s *" % self.arith)
-        check(self._f["mdr_critical"](self._c, ctl, k, a_start, out),
-              "critical(%r, k_machine=%s, a_start=%.9g)" % (control, k_machine, a_start))
+        what = "critical(%r, k_machine=%s, a_start=%.9g)" % (control, k_machine, a_start)
+        check(self._f["mdr_critical"](self._c, ctl, k, a_start, out), what)
+        if self.arith == "f32":
+            # f32's state against f64's at the values given, as `mdr critical
+            # --arith f32` checks it (mdrpy_f32_crit_wrong)
+            tip = self.kind == lib.MDR_PROFILE_TABLE
+            a0 = ffi.new("double *", float(given)) if given is not None else ffi.NULL
+            er = lib.mdrpy_f32_crit_wrong(self.kind, [float(v) for v in self.p], dptr(self.r) if tip else ffi.NULL,
+                                          self._slopes if tip else ffi.NULL, self.r.size if tip else 0, self.E,
+                                          self.w, ctl, 0.0 if k_machine is None else float(k_machine), a0,
+                                          float(out.a), float(out.d), float(out.F), float(out.F_min))
+            if er > lib.mdrpy_f32_crit_max():
+                raise Error(lib.MDR_E_PARAM, what, hint="f32's critical state is %.2g off f64's at the values given "
+                            "(more than %g); use arith='f64'" % (er, lib.mdrpy_f32_crit_max()))
         return Critical(a=float(out.a), d=float(out.d), F=float(out.F), jumps=int(out.jumps), control=control,
                         k_machine=k_machine, a_start=float(a_start))
 

@@ -34,6 +34,11 @@ double mdrpy_f32_answer_max(void)
     return MDR_HOST_F32_ANSWER_MAX;
 }
 
+double mdrpy_f32_crit_max(void)
+{
+    return MDR_HOST_F32_CRIT_MAX;
+}
+
 /* v held by float exactly (its rounding is v): where every input is, the
  * roundings are the values and mdr_host_f32_eq_change() is 0 */
 static int mdrpy_is_float(double v)
@@ -138,6 +143,23 @@ static size_t mdrpy_f32_wrong(uint8_t kind, const double p[3], const double *r, 
     }
     free(rd);
     return i;
+}
+
+double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                            double w, uint8_t control, double k_m, const double *a0, double a32, double d32, double F32,
+                            double Fm32)
+{
+    mdr_host_f32_eq_pair x;
+    double *rd, er = 0.0;
+    const int ok = mdrpy_f32_pair(&x, kind, p, r, s, m, E, w, &rd);
+    if (ok < 0) {
+        return DBL_MAX; /* (refused: the check cannot be made) */
+    }
+    if (ok) {
+        er = mdr_host_f32_crit_err(&x, control, k_m, a0, a32, d32, F32, Fm32);
+    }
+    free(rd);
+    return er;
 }
 
 size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,

@@ -123,6 +123,7 @@ size_t mdrpy_fit_work_len(size_t n);
 double mdrpy_f32_eq_max(void);
 /** The error above which they refuse an f32 answer (MDR_HOST_F32_ANSWER_MAX). */
 double mdrpy_f32_answer_max(void);
+double mdrpy_f32_crit_max(void);
 
 /**
  * @brief The CLI's f32 check of `eq` and `curve` over n points: the first i
@@ -152,6 +153,17 @@ size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w,
  */
 size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
                                 const double *a, const double *d, double *change);
+
+/**
+ * @brief The error of an f32 critical state (a32, d32, F32, the most tensile
+ *        force Fm32) against f64's at the values given, from the start *a0
+ *        (NULL: f64's default start), as `mdr critical --arith f32` checks
+ *        it (mdr_host_f32_crit_err(); the contact as mdrpy_f32_eq_wrong()
+ *        takes it); DBL_MAX where memory for a tip's samples is not there.
+ */
+double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                            double w, uint8_t control, double k_m, const double *a0, double a32, double d32, double F32,
+                            double Fm32);
 
 /**
  * @brief The first of n f32 answers beyond MDR_HOST_F32_ANSWER_MAX of the

@@ -423,3 +423,43 @@ def test_state_F_as_cli(cli, arith, k):
         e = c64.eq(a)
         F64 = c64.eq(a, d=d).F
         assert within(abs(s.F - F64) / max(abs(F64), 2 * E_ * e.a * e.dl), ST32, "state F as cli"), (s.F, F64)
+
+
+CRIT_WRONG = re.compile(r"^mdr: critical: f32's critical state is (\S+) off f64's at the values given \(more than "
+                        r"3e-06\): --arith f64$")
+
+
+def test_critical_as_cli(cli, tmp_path):
+    """f32's critical state against f64's at the values given (stop 62,
+    mdr_host_f32_crit_err: a, d, F and the most tensile force, within 3e-6):
+    on test_coarse_tip_as_cli's 5-sample table the pull-off lies at 2.4 % of
+    the first interval and the most tensile force is 3.4e-6 off in f32;
+    Contact.critical refuses it as `mdr critical --arith f32` does
+    (MDR_E_PARAM, the same error named) under load, grips and a machine;
+    the paraboloid's states are answered, the same floats as the CLI's."""
+    R = 1e-3
+    r = 0.75e-3 * np.arange(5) / 4
+    path = tmp_path / "ex5.csv"
+    np.savetxt(path, np.c_[r, R - np.sqrt(R * R - r * r)], delimiter=",", fmt="%.17g")
+    rf = np.loadtxt(path, delimiter=",")
+    cases = [(["--profile", "table", "--file", str(path), "--E", "1e11"],
+              mdr.Contact("table", E=1e11, w=W, r=rf[:, 0].copy(), f=rf[:, 1].copy(), arith="f32"), "refused"),
+             (["--profile", "paraboloid", "--R", "1e-5", "--E", "1e6"],
+              mdr.Contact("paraboloid", E=1e6, w=W, R=1e-5, arith="f32"), "answer")]
+    for opts, c32, want in cases:
+        for control, k in (("load", None), ("grips", None), ("machine", 1.0)):
+            args = ["critical"] + opts + ["--w", "0.05", "--control", control, "--arith", "f32"]
+            rc, out, err = run_cli(cli, args + (["--k-machine", "1"] if k else []))
+            if want == "refused":
+                m = CRIT_WRONG.match(err.strip())
+                assert rc == 2 and m, err
+                with pytest.raises(mdr.Error) as ei:
+                    c32.critical(control, k_machine=k)
+                assert ei.value.status == "MDR_E_PARAM", str(ei.value)
+                assert str(ei.value).endswith("f32's critical state is %s off f64's at the values given (more than "
+                                              "3e-06); use arith='f64'" % m.group(1)), str(ei.value)
+            else:
+                assert rc == 0, err
+                j, s = json.loads(out), c32.critical(control, k_machine=k)
+                for q in ("a", "d", "F"):
+                    assert np.float32(j[q]) == np.float32(getattr(s, q)), (control, q)
