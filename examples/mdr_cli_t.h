@@ -657,7 +657,7 @@ static int CLI_SFX(f32_wrong)(const char *opt, double v, double er, const char *
 }
 
 /* eq, critical, curve and stress on the scene's contact; x32: the f32
- * check's f64 contacts (eq and curve in f32), or NULL */
+ * checks' f64 contacts (every one of these commands in f32), or NULL */
 static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_contact) *cp,
                                   const mdr_host_f32_eq_pair *x32)
 {
@@ -803,9 +803,10 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
         if (st != MDR_OK) {
             return cli_fail("critical", st);
         }
-        if (x32 != NULL && A->cmd == CMD_CRITICAL) {
+        if (x32 != NULL) {
             /* f32's critical state beyond its tolerance against f64's
-             * (a measured tip): mdr_host_f32_crit_err */
+             * (a measured tip; also for the stress there):
+             * mdr_host_f32_crit_err */
             const double er = mdr_host_f32_crit_err(x32, A->control, A->k_m, A->have_a_start ? &A->a_start : NULL,
                                                     (double)o.a, (double)o.d, (double)o.F, (double)o.F_min);
             if (er > MDR_HOST_F32_CRIT_MAX) {
@@ -833,6 +834,17 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
             st = CLI_SFX(mdr_stress)(&c, o.a, (CLI_T)(A->r * (double)o.a), &sg);
             if (st != MDR_OK) {
                 return cli_fail("--r (fraction of the critical radius)", st);
+            }
+            if (x32 != NULL) {
+                /* and f32's stress there against f64's answer to the same
+                 * command: mdr_host_f32_crit_stress_err */
+                const double er = mdr_host_f32_crit_stress_err(x32, A->control, A->k_m,
+                                                               A->have_a_start ? &A->a_start : NULL, A->r, (double)sg);
+                if (er > MDR_HOST_F32_CRIT_MAX) {
+                    return usage_errf("--r %.15g: f32's stress at the critical state is %.2g off f64's at the values "
+                                      "given (more than %g): --arith f64",
+                                      A->r, er, MDR_HOST_F32_CRIT_MAX);
+                }
             }
             {
                 cli_json j;
@@ -886,8 +898,7 @@ static int CLI_SFX(contact_cmd)(const struct cli_args *A, const CLI_SFX(mdr_cont
     mdr_host_f32_eq_pair x32;
     double *rd;
     int rc;
-    if (CLI_F64 || (A->cmd != CMD_EQ && A->cmd != CMD_CURVE && A->cmd != CMD_CRITICAL &&
-                    (A->cmd != CMD_STRESS || A->have_control))) {
+    if (CLI_F64 || (A->cmd != CMD_EQ && A->cmd != CMD_CURVE && A->cmd != CMD_CRITICAL && A->cmd != CMD_STRESS)) {
         return CLI_SFX(contact_cmd_x)(A, cp, NULL);
     }
     if (A->kind != KIND_TABLE) {

@@ -987,5 +987,51 @@ for i in $(seq 1 10); do
 done
 [ $nref -gt 30 ] && ok || bad "quantized tip, stress in f32: $nacc answered, $nref refused"
 
+# f32's stress at the critical state (`stress --control`, unchecked before):
+# the critical state checked as `critical` checks it, then the stress against
+# f64's answer to the same command (mdr_host_f32_crit_stress_err: the stress
+# at the fraction --r of f64's critical radius, on the scale of `stress --a`,
+# refused beyond 3e-6, the critical search's tolerance). The smooth
+# profiles under every control answer within that; the flattened tip, whose
+# pull-off lies at its rim, answers (its stress 1.3e-7 off f64's, though at
+# f32's own radius, b's rounding past the rim, f64 gives 2.7e-4 more); next
+# to the edge, --r 0.999, the rounding of r moves a - r by 6e-5 of it: refused
+for p in "paraboloid --R 1e-6" "sphere --R 1e-6" "powerlaw --C 1e5 --n 3" "flattip --R 1e-6 --b 1e-7" \
+    "wavy --R 1e-5 --h 1e-8 --lambda 5e-7"; do
+    for ctl in "load" "grips" "machine --k-machine 1"; do
+        for rf in 0 0.5 0.9; do
+            # shellcheck disable=SC2086
+            o32=$($MDR stress --profile $p --E 1e9 --w 0.05 --control $ctl --r $rf 2>&1)
+            # shellcheck disable=SC2086
+            o64=$($MDR stress --profile $p --E 1e9 --w 0.05 --control $ctl --r $rf --arith f64 2>&1)
+            near "$(key "$o32" sigma)" "$(key "$o64" sigma)" 3e-6 && ok ||
+                bad "stress --profile $p --control $ctl --r $rf in f32: $o32 vs $o64"
+        done
+    done
+done
+refuse "^mdr: --r 0.999: f32's stress at the critical state is [0-9.e-]* off f64's at the values given \(more than 3e-06\): --arith f64$" \
+    stress --profile paraboloid --R 1e-6 --E 1e9 --w 0.05 --control load --r 0.999
+$MDR stress --profile paraboloid --R 1e-6 --E 1e9 --w 0.05 --control load --r 0.999 --arith f64 >/dev/null &&
+    ok || bad "stress --control load --r 0.999 in f64"
+# a measured tip (a 20 nm sphere to 19 nm, heights quantized to 0.1 nm):
+# under load at E* 1e8 its critical state passes and f32's stress there was
+# 2.8e-5 to 9.6e-5 off f64's (exit 0 before), through a 1 N/m machine at
+# --r 0, 4.6e-4: refused, f64 answers
+awk 'BEGIN { R = 20e-9; p = 0; for (i = 0; i < 1000; i++) { r = 19e-9 * i / 999;
+    h = r * r / (R + sqrt(R * R - r * r)); q = int(h / 1e-10 + 0.5) * 1e-10; if (q < p) q = p; p = q;
+    printf "%.17g,%.17g\n", r, q } }' >"$TMP/tipq19.csv"
+for c in "load --r 0" "load --r 0.5" "load --r 0.9" "machine --k-machine 1 --r 0"; do
+    # shellcheck disable=SC2086
+    refuse "^mdr: --r [0-9.]*: f32's stress at the critical state is [0-9.e-]* off f64's at the values given \(more than 3e-06\): --arith f64$" \
+        stress --profile table --file "$TMP/tipq19.csv" --E 1e8 --w 0.05 --control $c
+    # shellcheck disable=SC2086
+    $MDR stress --profile table --file "$TMP/tipq19.csv" --E 1e8 --w 0.05 --control $c --arith f64 >/dev/null &&
+        ok || bad "quantized tip, stress --control $c in f64"
+done
+# and where the critical state itself is refused (the coarse table above),
+# its stress is too, naming the critical state
+refuse "^mdr: critical: f32's critical state is [0-9.e-]* off f64's at the values given \(more than 3e-06\): --arith f64$" \
+    stress --profile table --file "$TMP/ex5.csv" --E 1e11 --w 0.05 --control load --r 0.5
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
