@@ -159,39 +159,10 @@ static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, doubl
     return mdr_contact_init_f64(&c, kind, p, E, w) == MDR_OK && mdr_host_eq64_c(&c, E, a, d, o);
 }
 
-/**
- * @brief mdr_host_f32_eq_change() at a (and *d) of contacts already made
- *        (mdr_host_f32_eq_pair).
- * @param c  the f64 contact at the values given (profile, E, w), or NULL
- *           where f64 refuses them
- * @param r  the f64 contact at their roundings to float, or NULL where f64
- *           refuses those
- * @param E  E* as given (r's is its rounding)
- * @return as mdr_host_f32_eq_change(); the profile's parameters, E and w
- *         within float are the caller's check
- */
-static inline double mdr_host_f32_eq_change_c(const mdr_contact_f64 *c, const mdr_contact_f64 *r, double E,
-                                              double a, const double *d)
-{
-    double v[4], u[4], dr;
-    if (!mdr_host_in_float(a) || (d != NULL && !mdr_host_in_float(*d))) {
-        return 0.0;
-    }
-    if (c == NULL || !mdr_host_eq64_c(c, E, a, d, v)) {
-        return 0.0;
-    }
-    dr = d != NULL ? mdr_host_f32_round(*d) : 0.0;
-    if (r == NULL ||
-        !mdr_host_eq64_c(r, mdr_host_f32_round(E), mdr_host_f32_round(a), d != NULL ? &dr : NULL, u)) {
-        return DBL_MAX;
-    }
-    return mdr_host_dF_err(u[0], u[1], v[0], v[1], v);
-}
-
 /* The two f64 contacts of mdr_host_f32_eq_change(): at the values given
  * (profile, E, w) and at their roundings to float, made once for every
  * radius of a caller (the CLI's curve rows, the Python package's f32 eq:
- * mdrpy_f32_eq_refused in python/src/mdr_py.c); cok, rok: f64 takes them */
+ * mdrpy_f32_eq_check in python/src/mdr_py.c); cok, rok: f64 takes them */
 typedef struct {
     mdr_contact_f64 c, r;
     double E;
@@ -252,6 +223,41 @@ static inline int mdr_host_f32_eq_pair_init_tip(mdr_host_f32_eq_pair *x, const d
     return 1;
 }
 
+/* Both f32 checks of an equilibrium (or the state (a, *d)) through the
+ * pair x, from one f64 state at the values given: *change (not NULL) the
+ * rounding's (mdr_host_f32_eq_pair_change(): against the f64 state at the
+ * roundings; DBL_MAX where f64 refuses those), *err (with ans, the f32
+ * answer d32, F32) the answer's (mdr_host_f32_eq_pair_err()); each 0
+ * where a, d are beyond float or f64 refuses the values given (the f32
+ * call names those). The Python package's f32 Contact.eq takes both in
+ * one call per point (mdrpy_f32_eq_check). */
+static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, double a, const double *d,
+                                              double *change, const double ans[2], double *err)
+{
+    double v[4];
+    if (change != NULL) {
+        *change = 0.0;
+    }
+    if (err != NULL) {
+        *err = 0.0;
+    }
+    if (!x->cok || !mdr_host_in_float(a) || (d != NULL && !mdr_host_in_float(*d)) ||
+        !mdr_host_eq64_c(&x->c, x->E, a, d, v)) {
+        return;
+    }
+    if (err != NULL) {
+        *err = mdr_host_dF_err(ans[0], ans[1], v[0], v[1], v);
+    }
+    if (change != NULL) {
+        double u[4];
+        const double dr = d != NULL ? mdr_host_f32_round(*d) : 0.0;
+        *change = x->rok && mdr_host_eq64_c(&x->r, mdr_host_f32_round(x->E), mdr_host_f32_round(a),
+                                            d != NULL ? &dr : NULL, u)
+                      ? mdr_host_dF_err(u[0], u[1], v[0], v[1], v)
+                      : DBL_MAX;
+    }
+}
+
 /** Above this error (relative, on mdr_host_f32_eq_change()'s scales) an
  *  f32 equilibrium's answer is refused (mdr_host_f32_eq_pair_err()):
  *  f32's goal for a state (docs/accuracy.md). */
@@ -271,11 +277,10 @@ static inline int mdr_host_f32_eq_pair_init_tip(mdr_host_f32_eq_pair *x, const d
 static inline double mdr_host_f32_eq_pair_err(const mdr_host_f32_eq_pair *x, double a, const double *d, double d32,
                                               double F32)
 {
-    double v[4];
-    if (!x->cok || !mdr_host_in_float(a) || !mdr_host_eq64_c(&x->c, x->E, a, d, v)) {
-        return 0.0;
-    }
-    return mdr_host_dF_err(d32, F32, v[0], v[1], v);
+    const double ans[2] = {d32, F32};
+    double er;
+    mdr_host_f32_eq_pair_check(x, a, d, NULL, ans, &er);
+    return er;
 }
 
 /* (mdr_host_f32_stress_err on the f64 contact c of modulus E, below) */
@@ -384,7 +389,9 @@ static inline double mdr_host_f32_crit_stress_err(const mdr_host_f32_eq_pair *x,
 /* mdr_host_f32_eq_change() at a (and *d) of the pair x */
 static inline double mdr_host_f32_eq_pair_change(const mdr_host_f32_eq_pair *x, double a, const double *d)
 {
-    return mdr_host_f32_eq_change_c(x->cok ? &x->c : NULL, x->rok ? &x->r : NULL, x->E, a, d);
+    double ch;
+    mdr_host_f32_eq_pair_check(x, a, d, &ch, NULL, NULL);
+    return ch;
 }
 
 /**

@@ -109,54 +109,50 @@ def f32_shape(kind, p, names, where):
                     ", or the cone as Contact('powerlaw', C=tan(theta), n=1)" if kind == lib.MDR_PROFILE_CONE else ""))
 
 
-def f32_eq(kind, p, E, w, flat):
-    """The CLI's f32 check of `mdr eq` and each row of `mdr curve`, over
-    the flat inputs (a, or a and d): (i, change) of the first point whose
-    state f32's rounding of the inputs (p, E, w as given, a, d) moves by more
-    than MDR_HOST_F32_EQ_MAX, or None (mdrpy_f32_eq_refused, which calls
-    mdr_host_f32_eq_change, examples/mdr_host.h; helper-41, stop 60: the
-    exact sphere at a = R (1 - 1e-5) answered 4e-5 off f64)."""
-    a = flat[0]
-    ch = ffi.new("double *")
-    i = lib.mdrpy_f32_eq_refused(kind, [float(v) for v in p], E, w, a.size, dptr(a),
-                                 dptr(flat[1]) if len(flat) > 1 else ffi.NULL, ch)
-    return (int(i), float(ch[0])) if i < a.size else None
-
-
-def f32_eq_tip(r, s, E, w, flat):
-    """f32_eq for a sampled tip (Contact('table')): the radii r (float64
-    array) and the slopes s (its cdata, m - 1 doubles formed as the contact
-    formed them) as given and converted to float (mdrpy_f32_eq_refused_tip,
-    the CLI's check of `mdr eq`/`curve --profile table --arith f32`)."""
-    a = flat[0]
-    ch = ffi.new("double *")
-    i = lib.mdrpy_f32_eq_refused_tip(dptr(r), s, r.size, E, w, a.size, dptr(a),
-                                     dptr(flat[1]) if len(flat) > 1 else ffi.NULL, ch)
-    return (int(i), float(ch[0])) if i < a.size else None
-
-
-def f32_wrong(contact, flat, d32, F32, stress=False):
-    """The CLI's check of an f32 answer of `mdr eq`, each row of `mdr curve`
-    and `mdr stress --a` (mdrpy_f32_eq_wrong: mdr_host_f32_eq_pair_err;
-    mdrpy_f32_stress_wrong: mdr_host_f32_stress_err): (i, error) of the first
-    of the points (flat: a, or a and d; for the stress a, (d,) r) whose f32
-    answer (d32, F32; the stress: F32 the stresses) lies more than
-    MDR_HOST_F32_ANSWER_MAX from f64's at the values given, or None
-    (helper-50, stop 62: a coarse table near its axis answered 9.5e-6 off
-    f64; a measured tip's stress up to 6e-3)."""
-    k = F32.size
-    pts = [np.ascontiguousarray(v[:k]) for v in flat]
-    a, d = pts[0], (pts[1] if len(pts) > (2 if stress else 1) else None)
-    F32 = np.ascontiguousarray(F32, dtype=np.float64)
-    err = ffi.new("double *")
+def _f32_head(contact, k, a, d):
+    """The contact and points of the f32 checks (mdr_py.h): a sampled tip's
+    radii and slopes (the cdata formed as the contact formed them) or the
+    analytic (kind, p); E, w as given; k points a (and d, or NULL)."""
     tip = contact.kind == lib.MDR_PROFILE_TABLE
-    head = (contact.kind, [float(v) for v in contact.p], dptr(contact.r) if tip else ffi.NULL,
+    return (contact.kind, [float(v) for v in contact.p], dptr(contact.r) if tip else ffi.NULL,
             contact._slopes if tip else ffi.NULL, contact.r.size if tip else 0, contact.E, contact.w, k, dptr(a),
             dptr(d) if d is not None else ffi.NULL)
-    if stress:
-        i = lib.mdrpy_f32_stress_wrong(*head, dptr(pts[-1]), dptr(F32), err)
-    else:
-        i = lib.mdrpy_f32_eq_wrong(*head, dptr(np.ascontiguousarray(d32, dtype=np.float64)), dptr(F32), err)
+
+
+def f32_eq_check(contact, flat, k, d32, F32):
+    """The CLI's two f32 checks of `mdr eq` and each row of `mdr curve` over
+    the flat inputs (a, or a and d), in one C call (mdrpy_f32_eq_check: one
+    pair of f64 contacts, one f64 state per point): (i, what, value) of the
+    first refused point, or None. what 0: f32's rounding of the inputs (p,
+    E, w as given, a, d) moves its state by value, more than
+    MDR_HOST_F32_EQ_MAX (helper-41, stop 60: the exact sphere at
+    a = R (1 - 1e-5) answered 4e-5 off f64); what 1: its f32 answer (d32,
+    F32, the first k points answered) lies value from f64's at the values
+    given, more than MDR_HOST_F32_ANSWER_MAX (helper-50, stop 62: a coarse
+    table near its axis answered 9.5e-6 off f64). The rounding is checked
+    up to point k (where the f32 loop refused, if it did) and refused
+    first, the answers below k."""
+    n = flat[0].size
+    a, d = flat[0], (flat[1] if len(flat) > 1 else None)
+    what, value = ffi.new("int *"), ffi.new("double *")
+    i = lib.mdrpy_f32_eq_check(*_f32_head(contact, n, a, d), k,
+                               dptr(np.ascontiguousarray(d32, dtype=np.float64)),
+                               dptr(np.ascontiguousarray(F32, dtype=np.float64)), what, value)
+    return (int(i), int(what[0]), float(value[0])) if i < n else None
+
+
+def f32_wrong(contact, flat, s32):
+    """The CLI's check of an f32 stress (`mdr stress --a`,
+    mdrpy_f32_stress_wrong: mdr_host_f32_stress_err): (i, error) of the
+    first of the points (flat: a, (d,) r) whose f32 stress s32 lies more
+    than MDR_HOST_F32_ANSWER_MAX from f64's at the values given, relative
+    to the two terms of 4.27, or None (a measured tip's stress up to 6e-3,
+    stop 62)."""
+    k = s32.size
+    pts = [np.ascontiguousarray(v[:k]) for v in flat]
+    err = ffi.new("double *")
+    i = lib.mdrpy_f32_stress_wrong(*_f32_head(contact, k, pts[0], pts[1] if len(pts) > 2 else None),
+                                   dptr(pts[-1]), dptr(np.ascontiguousarray(s32, dtype=np.float64)), err)
     return (int(i), float(err[0])) if i < k else None
 
 

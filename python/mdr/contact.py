@@ -8,7 +8,7 @@ import types
 
 import numpy as np
 
-from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq, f32_eq_error, f32_eq_tip,
+from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq_check, f32_eq_error,
                     f32_shape, f32_wrong, f32_wrong_error, ffi, lib, narrow, real_array, shaped, shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
@@ -193,46 +193,45 @@ class Contact:
 
     def _loop(self, name, what, names, inputs, ncols, nflags=0, nullable=None, rounding=False, answer=False):
         """Call the C loop name over the broadcast inputs; (shape, out, flags,
-        the flat inputs). rounding: an f32 equilibrium (eq): the points are
-        checked as `mdr eq` and `mdr curve` check theirs (f32_eq: the
-        rounding of the inputs; f32_wrong: the answer against f64 at the
-        values given), and the first refused point raises after the points
-        before it are computed (a refusal of the library before it is raised
-        first, as the CLI's rows). answer: a stress, whose f32 answer is
-        checked as `mdr stress --a` checks it (f32_wrong)."""
+        the flat inputs). rounding: an f32 equilibrium (eq), whose points are
+        checked as `mdr eq` and `mdr curve` check theirs, in one call after
+        the loop (f32_eq_check: the rounding of the inputs, then the answer
+        against f64 at the values given), and the first refused point raises
+        as the CLI's row would (a refusal of the library at a point refused
+        for its rounding is not raised: the rounding's is). answer: a stress,
+        whose f32 answer is checked as `mdr stress --a` checks it
+        (f32_wrong)."""
         shape, flat = broadcast(what, names, inputs)
         n = flat[0].size
-        refused = None
-        if rounding and self.arith == "f32":
-            refused = (f32_eq_tip(self.r, self._slopes, self.E, self.w, flat) if self.kind == lib.MDR_PROFILE_TABLE
-                       else f32_eq(self.kind, self.p, self.E, self.w, flat))
         out = np.empty((ncols, n))
         flags = np.empty((nflags, n), dtype=np.uint8) if nflags else None
         fail = ffi.new("size_t *")
         args = [dptr(a) for a in flat]
         if nullable is not None:  # an optional input given as NULL
             args.insert(nullable, ffi.NULL)
-        m = n if refused is None else refused[0]  # the points before a refused one
         if nflags:
-            st = self._f[name](self._c, m, *args, dptr(out), ffi.from_buffer("uint8_t[]", flags), fail)
+            st = self._f[name](self._c, n, *args, dptr(out), ffi.from_buffer("uint8_t[]", flags), fail)
         else:
-            st = self._f[name](self._c, m, *args, dptr(out), fail)
+            st = self._f[name](self._c, n, *args, dptr(out), fail)
         if (rounding or answer) and self.arith == "f32":
-            k = fail[0] if st != lib.MDR_OK else m  # the points answered
-            cols = out.reshape(-1)[:ncols * m].reshape(ncols, m)  # (the C loop's columns: m values each)
+            k = fail[0] if st != lib.MDR_OK else n  # the points answered
             if answer:
-                d32, F32 = None, cols[0][:k]
-            elif len(flat) == 1:
-                d32, F32 = cols[lib.MDRPY_EQ_D][:k], cols[lib.MDRPY_EQ_F][:k]
-            else:  # a state: its d as the CLI reads it, in float
-                d32, F32 = flat[1][:k].astype(np.float32).astype(np.float64), cols[lib.MDRPY_ST_F][:k]
-            wrong = f32_wrong(self, flat, d32, F32, stress=answer)
-            if wrong is not None:
-                raise f32_wrong_error(what, shape, wrong[0], wrong[1], names, flat)
+                wrong = f32_wrong(self, flat, out[0][:k])
+                if wrong is not None:
+                    raise f32_wrong_error(what, shape, wrong[0], wrong[1], names, flat)
+            else:
+                if len(flat) == 1:
+                    d32, F32 = out[lib.MDRPY_EQ_D], out[lib.MDRPY_EQ_F]
+                else:  # a state: its d as the CLI reads it, in float
+                    d32, F32 = flat[1].astype(np.float32).astype(np.float64), out[lib.MDRPY_ST_F]
+                refused = f32_eq_check(self, flat, k, d32, F32)
+                if refused is not None:
+                    i, why, v = refused
+                    if why == 0:
+                        raise f32_eq_error(what, shape, i, v, names, flat)
+                    raise f32_wrong_error(what, shape, i, v, names, flat)
         if st != lib.MDR_OK:
             raise element_error(st, what, shape, fail[0], names, flat)
-        if refused is not None:
-            raise f32_eq_error(what, shape, refused[0], refused[1], names, flat)
         return shape, out, flags, flat
 
     def eq(self, a, d=None):

@@ -46,62 +46,10 @@ static int mdrpy_is_float(double v)
     return mdr_host_in_float(v) && mdr_host_f32_round(v) == v;
 }
 
-/* the first of the n points (a[i], d[i]) whose change through the pair x
- * is beyond MDR_HOST_F32_EQ_MAX (*change: it), or n; exact: every input
- * but the points already a float */
-static size_t mdrpy_f32_eq_first(const mdr_host_f32_eq_pair *x, int exact, size_t n, const double *a, const double *d,
-                                 double *change)
-{
-    size_t i;
-    for (i = 0; i < n; i++) {
-        double ch;
-        if (exact && mdrpy_is_float(a[i]) && (d == NULL || mdrpy_is_float(d[i]))) {
-            continue; /* rounded the same: the change is 0 */
-        }
-        ch = mdr_host_f32_eq_pair_change(x, a[i], d != NULL ? &d[i] : NULL);
-        if (ch > MDR_HOST_F32_EQ_MAX) {
-            *change = ch;
-            return i;
-        }
-    }
-    return n;
-}
-
-size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
-                            const double *d, double *change)
-{
-    mdr_host_f32_eq_pair x;
-    const int exact = mdrpy_is_float(p[0]) && mdrpy_is_float(p[1]) && mdrpy_is_float(p[2]) && mdrpy_is_float(E) &&
-                      mdrpy_is_float(w);
-    if (!mdr_host_f32_eq_pair_init(&x, kind, p, E, w)) {
-        return n; /* (mdr_host_f32_eq_change: 0, the f32 call's case) */
-    }
-    return mdrpy_f32_eq_first(&x, exact, n, a, d, change);
-}
-
-size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
-                                const double *a, const double *d, double *change)
-{
-    mdr_host_f32_eq_pair x;
-    double *rd = malloc(2 * (size_t)m * sizeof *rd);
-    int exact = mdrpy_is_float(E) && mdrpy_is_float(w);
-    size_t i;
-    if (rd == NULL) {
-        *change = DBL_MAX;
-        return 0; /* (refused: the check cannot be made) */
-    }
-    for (i = 0; i < m; i++) {
-        exact = exact && mdrpy_is_float(r[i]) && (i + 1 == m || mdrpy_is_float(s[i]));
-    }
-    i = mdr_host_f32_eq_pair_init_tip(&x, r, s, m, E, w, rd) ? mdrpy_f32_eq_first(&x, exact, n, a, d, change) : n;
-    free(rd);
-    return i;
-}
-
-/* The pair of mdrpy_f32_eq_wrong and mdrpy_f32_stress_wrong: a sampled
- * tip's (r not NULL: m radii, the slopes s, their conversions in *rd,
- * malloc'd here, the caller frees it) or an analytic profile's (kind, p).
- * -1: no memory; 0: no check (a value beyond float); 1: made. */
+/* The pair of the f32 checks: a sampled tip's (r not NULL: m radii, the
+ * slopes s, their conversions in *rd, malloc'd here, the caller frees it)
+ * or an analytic profile's (kind, p). -1: no memory; 0: no check (a value
+ * beyond float); 1: made. */
 static int mdrpy_f32_pair(mdr_host_f32_eq_pair *x, uint8_t kind, const double p[3], const double *r, const double *s,
                           uint16_t m, double E, double w, double **rd)
 {
@@ -116,11 +64,62 @@ static int mdrpy_f32_pair(mdr_host_f32_eq_pair *x, uint8_t kind, const double p[
     return mdr_host_f32_eq_pair_init_tip(x, r, s, m, E, w, *rd);
 }
 
-/* mdrpy_f32_eq_wrong (rr NULL: the states' d32, F32) and
- * mdrpy_f32_stress_wrong (the stresses F32 at rr), written once */
-static size_t mdrpy_f32_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
-                              double w, size_t n, const double *a, const double *d, const double *rr,
-                              const double *d32, const double *F32, double *err)
+/* every input but the points already a float (their roundings are the
+ * values: mdr_host_f32_eq_change() is 0 at a point that is one too) */
+static int mdrpy_f32_inputs_exact(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
+                                  double E, double w)
+{
+    int exact = mdrpy_is_float(E) && mdrpy_is_float(w);
+    uint16_t i;
+    (void)kind;
+    if (r == NULL) {
+        return exact && mdrpy_is_float(p[0]) && mdrpy_is_float(p[1]) && mdrpy_is_float(p[2]);
+    }
+    for (i = 0; i < m; i++) {
+        exact = exact && mdrpy_is_float(r[i]) && (i + 1 == m || mdrpy_is_float(s[i]));
+    }
+    return exact;
+}
+
+size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                          double w, size_t n, const double *a, const double *d, size_t k, const double *d32,
+                          const double *F32, int *what, double *value)
+{
+    mdr_host_f32_eq_pair x;
+    double *rd;
+    size_t i;
+    const int exact = mdrpy_f32_inputs_exact(kind, p, r, s, m, E, w);
+    const int ok = mdrpy_f32_pair(&x, kind, p, r, s, m, E, w, &rd);
+    if (ok < 0) {
+        *what = 0;
+        *value = DBL_MAX;
+        return 0; /* (refused: the check cannot be made) */
+    }
+    for (i = 0; ok && i < n && i <= k; i++) {
+        /* (where every input is a float the change is 0: not computed) */
+        const int rounded = !(exact && mdrpy_is_float(a[i]) && (d == NULL || mdrpy_is_float(d[i])));
+        const double ans[2] = {i < k ? d32[i] : 0.0, i < k ? F32[i] : 0.0};
+        double ch = 0.0, er = 0.0;
+        mdr_host_f32_eq_pair_check(&x, a[i], d != NULL ? &d[i] : NULL, rounded ? &ch : NULL, ans,
+                                   i < k ? &er : NULL);
+        if (ch > MDR_HOST_F32_EQ_MAX || er > MDR_HOST_F32_ANSWER_MAX) {
+            *what = ch > MDR_HOST_F32_EQ_MAX ? 0 : 1; /* (the rounding's first, as the CLI's order) */
+            *value = *what == 0 ? ch : er;
+            break;
+        }
+        if (i == k) {
+            i = n; /* (not answered: the library's refusal at k stands) */
+            break;
+        }
+    }
+    free(rd);
+    return ok && i < n ? i : n;
+}
+
+/* the f32 stresses s32[i] at rr[i] in the states (a[i], d[i]) */
+size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
+                              double E, double w, size_t n, const double *a, const double *d, const double *rr,
+                              const double *s32, double *err)
 {
     mdr_host_f32_eq_pair x;
     double *rd;
@@ -132,9 +131,7 @@ static size_t mdrpy_f32_wrong(uint8_t kind, const double p[3], const double *r, 
     }
     if (ok) {
         for (i = 0; i < n; i++) {
-            const double *di = d != NULL ? &d[i] : NULL;
-            const double er = rr != NULL ? mdr_host_f32_stress_err(&x, a[i], di, rr[i], F32[i])
-                                         : mdr_host_f32_eq_pair_err(&x, a[i], di, d32[i], F32[i]);
+            const double er = mdr_host_f32_stress_err(&x, a[i], d != NULL ? &d[i] : NULL, rr[i], s32[i]);
             if (er > MDR_HOST_F32_ANSWER_MAX) {
                 *err = er;
                 break;
@@ -160,20 +157,6 @@ double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, co
     }
     free(rd);
     return er;
-}
-
-size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
-                          double w, size_t n, const double *a, const double *d, const double *d32, const double *F32,
-                          double *err)
-{
-    return mdrpy_f32_wrong(kind, p, r, s, m, E, w, n, a, d, NULL, d32, F32, err);
-}
-
-size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
-                              double E, double w, size_t n, const double *a, const double *d, const double *rr,
-                              const double *s32, double *err)
-{
-    return mdrpy_f32_wrong(kind, p, r, s, m, E, w, n, a, d, rr, NULL, s32, err);
 }
 
 /* the q31 table from the f64 one and the double init, as `mdr cycle` */

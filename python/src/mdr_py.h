@@ -126,39 +126,38 @@ double mdrpy_f32_answer_max(void);
 double mdrpy_f32_crit_max(void);
 
 /**
- * @brief The CLI's f32 check of `eq` and `curve` over n points: the first i
- *        whose state f32's rounding of the inputs moves by more than
- *        MDR_HOST_F32_EQ_MAX (mdr_host_f32_eq_change(kind, p, E, w, a[i],
- *        d ? &d[i] : NULL): the f64 state at the values and at their
- *        roundings to float), its two f64 contacts made once
- *        (mdr_host_f32_eq_change_c()). p, E, w: the values given (not
- *        rounded). Where every input is already a float the change is 0
- *        and the two f64 states are skipped.
- * @param d      NULL: the equilibria at a; else the states (a[i], d[i])
- * @param change the refused point's change (DBL_MAX: f64 takes the values
- *               and refuses their rounding); untouched when none is
- * @return the index of the first refused point, or n
+ * @brief The CLI's two f32 checks of `eq` and `curve` over n points, from
+ *        one pair of f64 contacts (mdr_host_f32_eq_pair: at the values
+ *        given and at their roundings to float) and one f64 state per
+ *        point (mdr_host_f32_eq_pair_check()): point i is refused where
+ *        f32's rounding of the inputs moves its state by more than
+ *        MDR_HOST_F32_EQ_MAX (*what 0, *value the change; DBL_MAX: f64
+ *        takes the values and refuses their rounding; skipped where every
+ *        input is already a float), or, answered (i < k), where its f32
+ *        answer d32[i], F32[i] lies more than MDR_HOST_F32_ANSWER_MAX from
+ *        the f64 state at the values given (*what 1, *value the error).
+ *        The contact: a sampled tip's (r not NULL: m radii r, the slopes s
+ *        formed in double as mdrpy_contact_tip forms them, converted to
+ *        float as `mdr eq --profile table --arith f32` converts them; the
+ *        memory for those taken and freed here, and where it is not there
+ *        point 0 is refused with *what 0, *value DBL_MAX) or else the
+ *        analytic (kind, p). p, E, w: the values given (not rounded).
+ * @param d  NULL: the equilibria at a; else the states (a[i], d[i])
+ * @param k  the points answered (the f32 loop's refusal at k, or n): the
+ *           rounding is checked up to k, which it refuses first, the
+ *           answers below k
+ * @return the index of the first refused point, or n (*what, *value
+ *         untouched)
  */
-size_t mdrpy_f32_eq_refused(uint8_t kind, const double p[3], double E, double w, size_t n, const double *a,
-                            const double *d, double *change);
-
-/**
- * @brief mdrpy_f32_eq_refused() for a sampled tip (Contact('table')): the
- *        f64 states at the radii r and slopes s given (m samples, the
- *        slopes formed in double as mdrpy_contact_tip forms them) and at
- *        their conversions to float (mdr_host_f32_eq_pair_init_tip(), as
- *        `mdr eq`/`curve --profile table --arith f32` check them). Memory
- *        for the converted samples is taken and freed here; where it is not
- *        there, point 0 is refused with change DBL_MAX.
- */
-size_t mdrpy_f32_eq_refused_tip(const double *r, const double *s, uint16_t m, double E, double w, size_t n,
-                                const double *a, const double *d, double *change);
+size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
+                          double w, size_t n, const double *a, const double *d, size_t k, const double *d32,
+                          const double *F32, int *what, double *value);
 
 /**
  * @brief The error of an f32 critical state (a32, d32, F32, the most tensile
  *        force Fm32) against f64's at the values given, from the start *a0
  *        (NULL: f64's default start), as `mdr critical --arith f32` checks
- *        it (mdr_host_f32_crit_err(); the contact as mdrpy_f32_eq_wrong()
+ *        it (mdr_host_f32_crit_err(); the contact as mdrpy_f32_eq_check()
  *        takes it); DBL_MAX where memory for a tip's samples is not there.
  */
 double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
@@ -166,21 +165,14 @@ double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, co
                             double Fm32);
 
 /**
- * @brief The first of n f32 answers beyond MDR_HOST_F32_ANSWER_MAX of the
- *        f64 state at the values given (mdr_host_f32_eq_pair_err(), as `mdr
- *        eq` and `curve --arith f32` check theirs): d32[i], F32[i] the f32
- *        state at (a[i], d[i]) (d NULL: the equilibria); the contact a
- *        sampled tip's (r not NULL: m radii r, slopes s, as
- *        mdrpy_f32_eq_refused_tip() takes them) or else the analytic
- *        (kind, p); *err the refused answer's error. Where memory for a
- *        tip's converted samples is not there, point 0 with DBL_MAX.
- *        mdrpy_f32_stress_wrong(): the same for the f32 stresses s32[i] at
- *        rr[i] (mdr_host_f32_stress_err(), as `mdr stress --a` checks it).
+ * @brief The first of n f32 stresses s32[i] at rr[i] in the states (a[i],
+ *        d[i]) (d NULL: the equilibria at a) beyond MDR_HOST_F32_ANSWER_MAX
+ *        of f64's at the values given (mdr_host_f32_stress_err(), as `mdr
+ *        stress --a` checks it; the contact as mdrpy_f32_eq_check() takes
+ *        it); *err the refused stress's error. Where memory for a tip's
+ *        converted samples is not there, point 0 with DBL_MAX.
  * @return its index, or n
  */
-size_t mdrpy_f32_eq_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
-                          double w, size_t n, const double *a, const double *d, const double *d32, const double *F32,
-                          double *err);
 size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
                               double E, double w, size_t n, const double *a, const double *d, const double *rr,
                               const double *s32, double *err);

@@ -7,11 +7,11 @@ its typed inputs (profile, E*, w, a, d) to float moves by more than
 MDR_HOST_F32_EQ_MAX = 1.5e-6 (mdr_host_f32_eq_change, examples/mdr_host.h;
 helper-41, stop 60: the exact sphere at a = R (1 - 1e-5) answered 4e-5 off
 f64, the flattened tip at a = b (1 + 1e-6) 2.6e-4). Contact(..., arith=
-"f32").eq calls the same check (mdrpy_f32_eq_refused). The sweeps are
+"f32").eq calls the same check (mdrpy_f32_eq_check). The sweeps are
 host_tests/test_cli.sh's: the sphere R = 1 um to a/R = 1 - 1e-1 ... 1e-8,
 the flattened tip R = 1 mm, b = 50 um to a/b = 1 + 1e-1 ... 1e-8, E* = 1
 GPa, w = 0.05 J/m^2, the radii typed as %.9g decimals; and measured tips
-(Contact('table'), mdrpy_f32_eq_refused_tip: the samples' conversion to
+(Contact('table'), mdrpy_f32_eq_check: the samples' conversion to
 float; a 20 nm sphere at 1 000 radii, heights exact or quantized to 0.1 nm).
 
 Tolerances; the worst error measured by this file in brackets (printed at
