@@ -287,13 +287,16 @@ static inline double mdr_host_f32_eq_pair_err(const mdr_host_f32_eq_pair *x, dou
 static inline double mdr_host_stress_err_c(const mdr_contact_f64 *c, double E, double a, const double *d, double r,
                                            double s32)
 {
-    mdr_eqstate_f64 e;
     double s64, g, t1, sc, er;
+    /* (g(a) - d: at the equilibrium dl = c_dl sqrt(a), 4.25, as mdr_stress
+     * takes it; not through mdr_eq, which refuses the flattened tip's rim,
+     * its pull-off under load and grips: the check answered 0 there, and a
+     * stress 1.3e-5 to 3.4e-2 off f64's passed, helper-h700) */
     if ((d != NULL ? mdr_stress_at_f64(c, a, *d, r, &s64) : mdr_stress_f64(c, a, r, &s64)) != MDR_OK ||
-        mdr_eq_f64(c, a, &e) != MDR_OK || mdr_profile_eval_f64(c, a, &g, NULL, NULL) != MDR_OK) {
+        mdr_profile_eval_f64(c, a, &g, NULL, NULL) != MDR_OK) {
         return 0.0;
     }
-    t1 = E / 3.14159265358979323846 * (g - (d != NULL ? *d : e.d)) / sqrt((a - r) * (a + r));
+    t1 = E / 3.14159265358979323846 * (d != NULL ? g - *d : c->c_dl * sqrt(a)) / sqrt((a - r) * (a + r));
     sc = (t1 < 0.0 ? -t1 : t1) + (t1 - s64 < 0.0 ? s64 - t1 : t1 - s64);
     er = (s32 - s64) / sc;
     return er < 0.0 ? -er : er;

@@ -1033,5 +1033,24 @@ done
 refuse "^mdr: critical: f32's critical state is [0-9.e-]* off f64's at the values given \(more than 3e-06\): --arith f64$" \
     stress --profile table --file "$TMP/ex5.csv" --E 1e11 --w 0.05 --control load --r 0.5
 
+# the flattened tip's pull-off at its rim, a = b, where f64's mdr_eq refuses
+# (g' infinite): the stress check took its scale from mdr_eq and answered 0
+# there, so next to the edge f32's stress passed 9e-6 (--r 0.999) and 1.3e-4
+# (--r 0.9999) off f64's, exit 0 (helper-h700); and `stress --a` at the rim,
+# --r 9.2834e-08, 1.8e-3. The scale now takes g(a) - d = dl, as mdr_stress
+for ctl in "load" "grips" "machine --k-machine 1"; do
+    for rf in 0.999 0.9999; do
+        # shellcheck disable=SC2086
+        refuse "^mdr: --r $rf: f32's stress at the critical state is [0-9.e-]* off f64's at the values given \(more than 3e-06\): --arith f64$" \
+            stress --profile flattip --R 1e-6 --b 1e-7 --E 1e9 --w 0.05 --control $ctl --r $rf
+    done
+done
+refuse "^mdr: --r 9.2834e-08: f32's answer is [0-9.e-]* off f64's at the values given \(more than 2e-06\): --arith f64$" \
+    stress --profile flattip --R 2.138700631353333e-07 --b 9.283475584305985e-08 --E 28994136.050532263 \
+    --w 0.001463599496085583 --a 9.283475584305985e-08 --r 9.2834e-08
+$MDR stress --profile flattip --R 2.138700631353333e-07 --b 9.283475584305985e-08 --E 28994136.050532263 \
+    --w 0.001463599496085583 --a 9.283475584305985e-08 --r 5e-8 >/dev/null && ok ||
+    bad "flattip stress --a at the rim, --r 5e-8, in f32"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
