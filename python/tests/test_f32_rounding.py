@@ -463,3 +463,18 @@ def test_critical_as_cli(cli, tmp_path):
                 j, s = json.loads(out), c32.critical(control, k_machine=k)
                 for q in ("a", "d", "F"):
                     assert np.float32(j[q]) == np.float32(getattr(s, q)), (control, q)
+
+
+def test_stress_at_the_flattened_tips_rim():
+    """At a = b, the flattened tip's rim (its pull-off), f64's mdr_eq refuses
+    (g' infinite) and the stress check took its scale from it: it answered 0
+    there, and f32's stress 1.8e-3 off f64's passed (helper-h700), as the
+    CLI's `stress --a` and `stress --control` did; refused now, and the
+    stress away from the rim answered."""
+    c = mdr.Contact("flattip", R=2.138700631353333e-07, b=9.283475584305985e-08, E=28994136.050532263,
+                    w=0.001463599496085583, arith="f32")
+    with pytest.raises(mdr.Error, match="f32's answer is") as ei:
+        c.stress([9.283475584305985e-08] * 2, [5e-8, 9.2834e-08])
+    assert ei.value.index == 1
+    s64 = c.replace(arith="f64").stress(9.283475584305985e-08, 5e-8)
+    assert abs(c.stress(9.283475584305985e-08, 5e-8) - s64) <= 2e-6 * abs(s64)
