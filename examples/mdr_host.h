@@ -358,10 +358,14 @@ static inline double mdr_host_f32_crit_err(const mdr_host_f32_eq_pair *x, uint8_
         ea = a32 != 0.0 ? 1.0 : 0.0;
         return ea;
     }
-    /* (the scales of the state (o.a, o.d): its F is o.F, an equilibrium) */
-    if (!mdr_host_eq64_c(&x->c, x->E, o.a, &o.d, v)) {
-        return 0.0;
-    }
+    /* the scales of mdr_host_eq64_c() at the state (o.a, o.d, o.F), an
+     * equilibrium, with dl = c_dl sqrt(a) (4.21): not through mdr_eq,
+     * which refuses the flattened tip's rim, its pull-off (the check was 0
+     * there; helper-52, stop 63) */
+    v[2] = x->c.c_dl * sqrt(o.a);
+    v[3] = 2.0 * x->E * o.a * v[2];
+    v[2] = fabs(o.d) > v[2] ? fabs(o.d) : v[2];
+    v[3] = fabs(o.F) > v[3] ? fabs(o.F) : v[3];
     ea = fabs(a32 - o.a) / o.a;
     eM = fabs(Fm32 - o.F_min) / (fabs(o.F_min) > v[3] ? fabs(o.F_min) : v[3]);
     ea = ea > eM ? ea : eM;

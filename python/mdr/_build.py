@@ -105,7 +105,8 @@ STRUCTS = {
 }
 STRUCTS_T = {
     "mdr_contact_{S}": [],
-    "mdr_critstate_{S}": [("{T}", "a"), ("{T}", "d"), ("{T}", "F"), ("uint16_t", "jumps"), ("{T}", "F_min")],
+    "mdr_critstate_{S}": [("{T}", "a"), ("{T}", "d"), ("{T}", "F"), ("uint16_t", "jumps"), ("{T}", "F_min"),
+                          ("{T}", "d_F_min")],
     "mdr_node_{S}": [],
 }
 

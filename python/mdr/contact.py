@@ -59,9 +59,12 @@ class State(_Result):
 class Critical(_Result):
     """The last stable state of quasi-static retraction (mdr_critical): a,
     d, F, and the jumps to smaller stable radii before it; a = d = F = 0 when
-    the contact peels off continuously."""
+    the contact peels off continuously. max_tensile_F [N] and max_tensile_d
+    [m]: the most tensile force of the quasi-static path and its depth (as
+    `mdr critical` prints them; under grips the paraboloid's -1.5 pi w R at
+    its fold's depth, while F is the last stable state's)."""
 
-    __slots__ = ("a", "d", "F", "jumps", "control", "k_machine", "a_start")
+    __slots__ = ("a", "d", "F", "jumps", "control", "k_machine", "a_start", "max_tensile_F", "max_tensile_d")
 
 
 class Profile(_Result):
@@ -289,7 +292,8 @@ class Contact:
         control "load" (fixed load), "grips" (fixed grips) or "machine" (a
         machine of stiffness k_machine [N/m] between the controlled base and
         the contact). a_start [m]: the equilibrium radius retraction starts
-        from (default: default_start()). Returns a Critical (a, d, F, jumps)."""
+        from (default: default_start()). Returns a Critical (a, d, F, jumps,
+        max_tensile_F, max_tensile_d)."""
         ctl = control_code(control, "critical")
         if k_machine is not None and ctl != lib.MDR_CONTROL_MACHINE:
             # (echoed and ignored before stop 56; mdr critical refuses it too)
@@ -315,7 +319,8 @@ class Contact:
                 raise Error(lib.MDR_E_PARAM, what, hint="f32's critical state is %.2g off f64's at the values given "
                             "(more than %g); use arith='f64'" % (er, lib.mdrpy_f32_crit_max()))
         return Critical(a=float(out.a), d=float(out.d), F=float(out.F), jumps=int(out.jumps), control=control,
-                        k_machine=k_machine, a_start=float(a_start))
+                        k_machine=k_machine, a_start=float(a_start), max_tensile_F=float(out.F_min),
+                        max_tensile_d=float(out.d_F_min))
 
 
 def _table_hint(st, r, f):

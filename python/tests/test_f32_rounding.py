@@ -461,7 +461,7 @@ def test_critical_as_cli(cli, tmp_path):
             else:
                 assert rc == 0, err
                 j, s = json.loads(out), c32.critical(control, k_machine=k)
-                for q in ("a", "d", "F"):
+                for q in ("a", "d", "F", "max_tensile_F", "max_tensile_d"):
                     assert np.float32(j[q]) == np.float32(getattr(s, q)), (control, q)
 
 
@@ -478,3 +478,28 @@ def test_stress_at_the_flattened_tips_rim():
     assert ei.value.index == 1
     s64 = c.replace(arith="f64").stress(9.283475584305985e-08, 5e-8)
     assert abs(c.stress(9.283475584305985e-08, 5e-8) - s64) <= 2e-6 * abs(s64)
+
+
+def test_critical_check_at_the_flattened_tips_rim():
+    """The critical check (mdrpy_f32_crit_wrong: mdr_host_f32_crit_err, as
+    `mdr critical --arith f32`) at the flattened tip's pull-off, its rim
+    a = b: its scales came from f64's mdr_eq, which refuses a = b, and it
+    answered 0 for any state there (helper-52, stop 63): f32's own state
+    is within 1e-7 (measured 1.8e-8), one moved by 1e-5 in a, d, F or the
+    most tensile force is 1e-5 off (tolerance: 0.5e-5 to 2e-5 of it)."""
+    from mdr._mdr_cffi import ffi, lib
+    for control in ("load", "grips", "machine"):
+        c = mdr.Contact("flattip", R=1e-6, b=1e-7, E=1e9, w=0.05, arith="f32")
+        k = 1.0 if control == "machine" else 0.0
+        s = c.critical(control, k_machine=k if k else None)
+        ctl = {"load": lib.MDR_CONTROL_LOAD, "grips": lib.MDR_CONTROL_GRIPS, "machine": lib.MDR_CONTROL_MACHINE}[control]
+        assert abs(s.a / 1e-7 - 1) < 1e-6, (control, s.a)  # the rim
+
+        def err(a, d, F, Fm):
+            return lib.mdrpy_f32_crit_wrong(lib.MDR_PROFILE_FLATTIP, [1e-6, 1e-7, 0.0], ffi.NULL, ffi.NULL, 0, 1e9,
+                                            0.05, ctl, k, ffi.NULL, a, d, F, Fm)
+        assert err(s.a, s.d, s.F, s.max_tensile_F) <= 1e-7, control
+        for i in range(4):
+            v = [s.a, s.d, s.F, s.max_tensile_F]
+            v[i] *= 1 + 1e-5
+            assert 0.5e-5 <= err(*v) <= 2e-5, (control, i, err(*v))
