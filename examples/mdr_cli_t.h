@@ -650,10 +650,10 @@ static int CLI_SFX(f32_refuse)(const char *opt, double v, double ch, const char 
 
 /* An f32 answer refused for its error against f64 at the values given
  * (mdr_host_f32_eq_pair_err, er beyond MDR_HOST_F32_ANSWER_MAX) */
-static int CLI_SFX(f32_wrong)(const char *opt, double v, double er, const char *where)
+static int CLI_SFX(f32_wrong)(const char *opt, double v, double er, const char *where, int q)
 {
-    return usage_errf("%s %.15g%s: f32's answer is %.2g off f64's at the values given (more than %g): --arith f64",
-                      opt, v, where, er, MDR_HOST_F32_ANSWER_MAX);
+    return usage_errf("%s %.15g%s: f32's %s is %.2g off f64's at the values given (more than %g): --arith f64", opt,
+                      v, where, mdr_host_f32_which(q), er, mdr_host_f32_max(q));
 }
 
 /* eq, critical, curve and stress on the scene's contact; x32: the f32
@@ -697,10 +697,12 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
             if (x32 != NULL) {
                 /* f32's own error beyond its goal (a coarse table near its
                  * axis): mdr_host_f32_eq_pair_err */
+                const double dv[2] = {(double)e.dd_da, (double)e.dF_da}; /* (printed too) */
+                int q = 0;
                 const double er =
-                    mdr_host_f32_eq_pair_err(x32, A->a, A->have_d ? &A->d : NULL, (double)d, (double)F);
-                if (er > MDR_HOST_F32_ANSWER_MAX) {
-                    return CLI_SFX(f32_wrong)("--a", A->a, er, "");
+                    mdr_host_f32_eq_pair_err(x32, A->a, A->have_d ? &A->d : NULL, (double)d, (double)F, dv, &q);
+                if (er > mdr_host_f32_max(q)) {
+                    return CLI_SFX(f32_wrong)("--a", A->a, er, "", q);
                 }
             }
             json_begin(&j, stdout, CLI_F64);
@@ -755,12 +757,13 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
                     return cli_fail("--a-max", st);
                 }
                 if (f32chk && pass == 0) {
+                    /* (its rows print a, d, F: no derivatives) */
                     const double er = mdr_host_f32_eq_pair_err(x32, A->a_max * (double)i / (double)A->n, NULL,
-                                                               (double)e.d, (double)e.F);
+                                                               (double)e.d, (double)e.F, NULL, NULL);
                     if (er > MDR_HOST_F32_ANSWER_MAX) {
                         char row[64];
                         (void)snprintf(row, sizeof row, ", its row %ld (a = %.9g)", i, (double)a);
-                        return CLI_SFX(f32_wrong)("--a-max", A->a_max, er, row);
+                        return CLI_SFX(f32_wrong)("--a-max", A->a_max, er, row, 0);
                     }
                 }
                 if (pass == 1) {
@@ -872,7 +875,7 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
              * mdr_host_f32_stress_err */
             const double er = mdr_host_f32_stress_err(x32, A->a, A->have_d ? &A->d : NULL, A->r, (double)sg);
             if (er > MDR_HOST_F32_ANSWER_MAX) {
-                return CLI_SFX(f32_wrong)("--r", A->r, er, "");
+                return CLI_SFX(f32_wrong)("--r", A->r, er, "", 0);
             }
         }
         {

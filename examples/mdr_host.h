@@ -125,8 +125,11 @@ static inline int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], do
 /* d and F of the f64 equilibrium at a of the contact c (of modulus E), or
  * of the state (a, *d) (F = F_eq + 2 E* a (d - d_eq), as `mdr eq --d`),
  * with the scales docs/accuracy.md compares them on (d: max(|d|, dl), F:
- * max(|F|, 2 E* a dl)); false where f64 refuses them */
-static inline int mdr_host_eq64_c(const mdr_contact_f64 *c, double E, double a, const double *d, double o[4])
+ * max(|F|, 2 E* a dl)), in o[0..3]; the equilibrium's dd/da and dF/da in
+ * o[4..5] with the sizes of their terms in o[6..7] (dd/da = g'(a) -
+ * dl/(2a): |g'(a)| + dl/(2a); dF/da = 2 E* (a dd/da - dl): 2 E* (a o[6] +
+ * dl)); false where f64 refuses them */
+static inline int mdr_host_eq64_c(const mdr_contact_f64 *c, double E, double a, const double *d, double o[8])
 {
     mdr_eqstate_f64 e;
     if (mdr_eq_f64(c, a, &e) != MDR_OK) {
@@ -138,13 +141,23 @@ static inline int mdr_host_eq64_c(const mdr_contact_f64 *c, double E, double a, 
     o[2] = o[2] > e.dl ? o[2] : e.dl;
     o[3] = o[1] < 0.0 ? -o[1] : o[1];
     o[3] = o[3] > 2.0 * E * e.a * e.dl ? o[3] : 2.0 * E * e.a * e.dl;
+    o[4] = e.dd_da;
+    o[5] = e.dF_da;
+    {
+        double g, gp;
+        if (mdr_profile_eval_f64(c, e.a, &g, &gp, NULL) != MDR_OK) {
+            gp = 0.0; /* (not at a: the equilibrium answered there) */
+        }
+        o[6] = fabs(gp) + 0.5 * e.dl / e.a;
+        o[7] = 2.0 * E * (e.a * o[6] + e.dl);
+    }
     return o[0] - o[0] == 0.0 && o[1] - o[1] == 0.0;
 }
 
 /* How far (d, F) lies from (d0, F0) on the scales o[2], o[3] of
  * mdr_host_eq64_c() (d: max(|d|, dl), F: max(|F|, 2 E* a dl)): the larger
  * relative error of the two, as docs/accuracy.md compares f32 with f64 */
-static inline double mdr_host_dF_err(double d, double F, double d0, double F0, const double o[4])
+static inline double mdr_host_dF_err(double d, double F, double d0, double F0, const double *o)
 {
     const double ed = fabs(d - d0) / o[2], eF = fabs(F - F0) / o[3];
     return ed > eF ? ed : eF;
@@ -153,7 +166,7 @@ static inline double mdr_host_dF_err(double d, double F, double d0, double F0, c
 /* mdr_host_eq64_c() of the contact (kind, p, E, w); false where f64
  * refuses it */
 static inline int mdr_host_eq64(uint8_t kind, const double p[3], double E, double w, double a, const double *d,
-                                double o[4])
+                                double o[8])
 {
     mdr_contact_f64 c;
     return mdr_contact_init_f64(&c, kind, p, E, w) == MDR_OK && mdr_host_eq64_c(&c, E, a, d, o);
@@ -223,18 +236,47 @@ static inline int mdr_host_f32_eq_pair_init_tip(mdr_host_f32_eq_pair *x, const d
     return 1;
 }
 
+/** Above this error (relative, on mdr_host_f32_eq_change()'s scales) an
+ *  f32 equilibrium's answer is refused (mdr_host_f32_eq_pair_err()):
+ *  f32's goal for a state (docs/accuracy.md). */
+#define MDR_HOST_F32_ANSWER_MAX 2e-6
+
+/** Above this error (relative to the sizes of its terms,
+ *  mdr_host_eq64_c()) an f32 equilibrium's dd/da or dF/da is refused
+ *  (mdr_host_f32_eq_pair_err()): a derivative carries one cancellation more
+ *  than d and F, and f32's goal for it is wider. Measured against f64 at the
+ *  same float inputs over 2 000 radii (1 nm to 3 um) of each analytic
+ *  profile, E* 1e6 to 1e11, w 0.01 to 0.5 (stop 63): the wavy profile 3.9e-5,
+ *  the flattened tip at its rim 7.4e-6, the sphere near a = R 2.5e-6, the
+ *  rest below 2.4e-7. A measured tip's samples converted to float moved it
+ *  beyond (a 20 nm sphere at 1 000 radii, heights quantized to 0.1 nm: 8e-5
+ *  and 2.1e-4 at two radii where d and F were within 3e-7, printed by `mdr
+ *  eq` with exit 0 before). */
+#define MDR_HOST_F32_SLOPE_MAX 5e-5
+
+/* the tolerance of mdr_host_f32_eq_pair_check()'s quantity k (0 d, 1 F,
+ * 2 dd/da, 3 dF/da) */
+static inline double mdr_host_f32_max(int k)
+{
+    return k >= 2 ? MDR_HOST_F32_SLOPE_MAX : MDR_HOST_F32_ANSWER_MAX;
+}
+
 /* Both f32 checks of an equilibrium (or the state (a, *d)) through the
  * pair x, from one f64 state at the values given: *change (not NULL) the
  * rounding's (mdr_host_f32_eq_pair_change(): against the f64 state at the
  * roundings; DBL_MAX where f64 refuses those), *err (with ans, the f32
- * answer d32, F32) the answer's (mdr_host_f32_eq_pair_err()); each 0
- * where a, d are beyond float or f64 refuses the values given (the f32
- * call names those). The Python package's f32 Contact.eq takes both in
- * one call per point (mdrpy_f32_eq_check). */
+ * answer d32, F32, and with dv also its equilibrium's dd/da, dF/da) the
+ * answer's (mdr_host_f32_eq_pair_err(); *which, not NULL: the quantity
+ * furthest beyond its tolerance, 0 d, 1 F, 2 dd/da, 3 dF/da: *err is its
+ * error, refused beyond mdr_host_f32_max(*which)); each 0 where a, d are beyond
+ * float or f64 refuses the values given (the f32 call names those). The
+ * Python package's f32 Contact.eq takes both in one call per point
+ * (mdrpy_f32_eq_check). */
 static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, double a, const double *d,
-                                              double *change, const double ans[2], double *err)
+                                              double *change, const double ans[2], const double *dv, double *err,
+                                              int *which)
 {
-    double v[4];
+    double v[8];
     if (change != NULL) {
         *change = 0.0;
     }
@@ -246,10 +288,22 @@ static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, dou
         return;
     }
     if (err != NULL) {
-        *err = mdr_host_dF_err(ans[0], ans[1], v[0], v[1], v);
+        /* (the quantity furthest beyond its tolerance, mdr_host_f32_max) */
+        int k, best = 0, n = dv != NULL ? 4 : 2;
+        *err = 0.0;
+        for (k = 0; k < n; k++) {
+            const double e = fabs((k < 2 ? ans[k] : dv[k - 2]) - v[k < 2 ? k : k + 2]) / v[k < 2 ? k + 2 : k + 4];
+            if (k == 0 || e / mdr_host_f32_max(k) > *err / mdr_host_f32_max(best)) {
+                *err = e;
+                best = k;
+            }
+        }
+        if (which != NULL) {
+            *which = best;
+        }
     }
     if (change != NULL) {
-        double u[4];
+        double u[8];
         const double dr = d != NULL ? mdr_host_f32_round(*d) : 0.0;
         *change = x->rok && mdr_host_eq64_c(&x->r, mdr_host_f32_round(x->E), mdr_host_f32_round(a),
                                             d != NULL ? &dr : NULL, u)
@@ -258,15 +312,14 @@ static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, dou
     }
 }
 
-/** Above this error (relative, on mdr_host_f32_eq_change()'s scales) an
- *  f32 equilibrium's answer is refused (mdr_host_f32_eq_pair_err()):
- *  f32's goal for a state (docs/accuracy.md). */
-#define MDR_HOST_F32_ANSWER_MAX 2e-6
-
-/* How far an f32 answer (d32, F32: computed at the inputs' roundings) lies
- * from the f64 state at the values given (x's first contact), on
- * mdr_host_f32_eq_change()'s scales: the rounding's change and f32's own
- * arithmetic together. The second is within f32's goal on the profiles
+/* How far an f32 answer (d32, F32: computed at the inputs' roundings; with
+ * dv also its equilibrium's dd/da and dF/da, on their scales over a,
+ * mdr_host_eq64_c) lies from the f64 state at the values given (x's first
+ * contact), on mdr_host_f32_eq_change()'s scales: the rounding's change
+ * and f32's own arithmetic together. The derivatives amplify what moves
+ * the samples of a measured tip: a 20 nm sphere sampled at 1 000 radii,
+ * heights quantized to 0.1 nm, answered dd/da up to 6.6e-6 off (stop 63)
+ * where d and F were within 3e-7. The second is within f32's goal on the profiles
  * and tips the tests sweep, but not everywhere: on a coarse table near its
  * axis f' is the small difference of an interval's slope and curvature
  * terms, eps h/a of it in float (5 samples of a 1 mm sphere, a 1.3 % of
@@ -275,12 +328,19 @@ static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, dou
  * Contact.eq refuse an error beyond MDR_HOST_F32_ANSWER_MAX. 0 where f64
  * refuses the values given (the f32 call names those). */
 static inline double mdr_host_f32_eq_pair_err(const mdr_host_f32_eq_pair *x, double a, const double *d, double d32,
-                                              double F32)
+                                              double F32, const double *dv, int *which)
 {
     const double ans[2] = {d32, F32};
     double er;
-    mdr_host_f32_eq_pair_check(x, a, d, NULL, ans, &er);
+    mdr_host_f32_eq_pair_check(x, a, d, NULL, ans, dv, &er, which);
     return er;
+}
+
+/* the name of mdr_host_f32_eq_pair_check()'s *which in the refusals: the
+ * state's d and F are "answer", as before the derivatives were checked */
+static inline const char *mdr_host_f32_which(int which)
+{
+    return which == 2 ? "dd_da" : which == 3 ? "dF_da" : "answer";
 }
 
 /* (mdr_host_f32_stress_err on the f64 contact c of modulus E, below) */
@@ -397,7 +457,7 @@ static inline double mdr_host_f32_crit_stress_err(const mdr_host_f32_eq_pair *x,
 static inline double mdr_host_f32_eq_pair_change(const mdr_host_f32_eq_pair *x, double a, const double *d)
 {
     double ch;
-    mdr_host_f32_eq_pair_check(x, a, d, &ch, NULL, NULL);
+    mdr_host_f32_eq_pair_check(x, a, d, &ch, NULL, NULL, NULL, NULL);
     return ch;
 }
 

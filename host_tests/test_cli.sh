@@ -861,20 +861,26 @@ eq_f32() { # eq_f32 E ARGS... -> "accepted" (within 2e-6 of f64), "refused" or a
     o=$($MDR eq "$@" --E "$E" 2>&1)
     e=$?
     if [ $e -eq 2 ] && printf '%s' "$o" |
-        grep -q -e "^mdr: --a [-0-9.e+]*: f32's rounding of the inputs to float " \
-            -e "^mdr: --a [-0-9.e+]*: f32's answer is [0-9.e+-]* off f64's at the values given (more than 2e-06)"; then
+        grep -q -E -e "^mdr: --a [-0-9.e+]*: f32's rounding of the inputs to float " \
+            -e "^mdr: --a [-0-9.e+]*: f32's (answer is [0-9.e+-]* off f64's at the values given \(more than 2e-06\)|(dd_da|dF_da) is [0-9.e+-]* off f64's at the values given \(more than 5e-05\))"; then
         echo refused
         return
     fi
     [ $e -eq 0 ] || { echo "exit $e: $o"; return; }
     f=$($MDR eq "$@" --E "$E" --arith f64) || { echo "f64 failed"; return; }
-    x=$(for j in "$o" "$f"; do for k in a d F dl; do
+    x=$(for j in "$o" "$f"; do for k in a d F dl dd_da dF_da; do
         printf '%s' "$j" | grep -o "\"$k\": [-0-9.e+]*" | head -1 | sed 's/.*: //'; done; done | tr '\n' ' ')
-    # x: a d F dl of f32, then a d F dl of f64
-    awk -v E="$E" -v s="$x" 'BEGIN { split(s, v, " "); sd = v[6] < 0 ? -v[6] : v[6]; if (v[8] > sd) sd = v[8];
-        sF = v[7] < 0 ? -v[7] : v[7]; if (2 * E * v[5] * v[8] > sF) sF = 2 * E * v[5] * v[8];
-        ed = (v[2] - v[6]) / sd; eF = (v[3] - v[7]) / sF; if (ed < 0) ed = -ed; if (eF < 0) eF = -eF;
-        exit !(ed <= 2e-6 && eF <= 2e-6) }' && echo accepted || echo "f32 $o vs f64 $f"
+    # x: a d F dl dd_da dF_da of f32, then of f64; d on max(|d|, dl), F on
+    # max(|F|, 2 E* a dl), within 2e-6; dd/da = g' - dl/(2a) on the sizes of
+    # its terms, sg = |g'| + dl/(2a), dF/da = 2 E* (a dd/da - dl) on
+    # 2 E* (a sg + dl), within 5e-5 (the answer check's, stop 63: the
+    # derivatives too, as eq prints them)
+    awk -v E="$E" -v s="$x" 'function ab(u) { return u < 0 ? -u : u }
+        function mx(u, w) { return u > w ? u : w }
+        BEGIN { split(s, v, " "); a = v[7]; dl = v[10]; sg = ab(v[11] + dl / (2 * a)) + dl / (2 * a);
+        ed = ab(v[2] - v[8]) / mx(ab(v[8]), dl); eF = ab(v[3] - v[9]) / mx(ab(v[9]), 2 * E * a * dl);
+        eg = ab(v[5] - v[11]) / sg; eh = ab(v[6] - v[12]) / (2 * E * (a * sg + dl));
+        exit !(ed <= 2e-6 && eF <= 2e-6 && eg <= 5e-5 && eh <= 5e-5) }' && echo accepted || echo "f32 $o vs f64 $f"
 }
 nacc=0
 nref=0
@@ -926,6 +932,14 @@ for i in $(seq 1 30); do
     tally "$(eq_f32 1e9 --profile table --file "$TMP/tipq.csv" --w 0.05 --a "$a")" "quantized tip, eq --a $a"
 done
 [ $nacc -gt 0 ] && [ $nref -gt 0 ] && ok || bad "quantized tip: $nacc accepted, $nref refused"
+# its derivatives, which eq prints, are checked too (stop 63; on the sizes
+# of their terms, within 5e-5): at a = 4.9017 and 5.36836667 nm the
+# rounding moves d and F within 1.5e-6 and f32's d, F are within 3e-7, but
+# its dd/da was 8e-5 and 2.1e-4 off f64's, printed with exit 0
+for a in 4.9017e-09 5.36836667e-09; do
+    refuse "^mdr: --a $a: f32's dd_da is [0-9.e-]* off f64's at the values given \(more than 5e-05\): --arith f64$" \
+        eq --profile table --file "$TMP/tipq.csv" --E 1e9 --w 0.05 --a "$a"
+done
 # f32's own error beyond its goal (helper-50, stop 62): on a coarse table
 # near its axis f' is the small difference of the first interval's slope
 # and curvature terms, eps h/a of it in float; 5 exact samples of a 1 mm

@@ -121,13 +121,14 @@ double mdr_host_path_value(const double *path, long steps, long seg, long j);
 int mdr_host_f32_shape_refused(uint8_t kind, const double p[3], double *change);
 double mdrpy_f32_eq_max(void);
 double mdrpy_f32_answer_max(void);
+double mdrpy_f32_slope_max(void);
 double mdrpy_f32_crit_max(void);
 double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
                             double w, uint8_t control, double k_m, const double *a0, double a32, double d32, double F32,
                             double Fm32);
 size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
                           double w, size_t n, const double *a, const double *d, size_t k, const double *d32,
-                          const double *F32, int *what, double *value);
+                          const double *F32, const double *dd32, const double *dF32, int *what, double *value);
 size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
                               double E, double w, size_t n, const double *a, const double *d, const double *rr,
                               const double *s32, double *err);

@@ -119,7 +119,7 @@ def _f32_head(contact, k, a, d):
             dptr(d) if d is not None else ffi.NULL)
 
 
-def f32_eq_check(contact, flat, k, d32, F32):
+def f32_eq_check(contact, flat, k, d32, F32, dd32=None, dF32=None):
     """The CLI's two f32 checks of `mdr eq` and each row of `mdr curve` over
     the flat inputs (a, or a and d), in one C call (mdrpy_f32_eq_check: one
     pair of f64 contacts, one f64 state per point): (i, what, value) of the
@@ -129,7 +129,9 @@ def f32_eq_check(contact, flat, k, d32, F32):
     a = R (1 - 1e-5) answered 4e-5 off f64); what 1: its f32 answer (d32,
     F32, the first k points answered) lies value from f64's at the values
     given, more than MDR_HOST_F32_ANSWER_MAX (helper-50, stop 62: a coarse
-    table near its axis answered 9.5e-6 off f64). The rounding is checked
+    table near its axis answered 9.5e-6 off f64), and with dd32, dF32 (an
+    equilibrium's) its dd/da and dF/da (stop 63: a quantized measured tip's
+    6.6e-6 off with d and F within 3e-7). The rounding is checked
     up to point k (where the f32 loop refused, if it did) and refused
     first, the answers below k."""
     n = flat[0].size
@@ -137,7 +139,10 @@ def f32_eq_check(contact, flat, k, d32, F32):
     what, value = ffi.new("int *"), ffi.new("double *")
     i = lib.mdrpy_f32_eq_check(*_f32_head(contact, n, a, d), k,
                                dptr(np.ascontiguousarray(d32, dtype=np.float64)),
-                               dptr(np.ascontiguousarray(F32, dtype=np.float64)), what, value)
+                               dptr(np.ascontiguousarray(F32, dtype=np.float64)),
+                               ffi.NULL if dd32 is None else dptr(np.ascontiguousarray(dd32, dtype=np.float64)),
+                               ffi.NULL if dF32 is None else dptr(np.ascontiguousarray(dF32, dtype=np.float64)),
+                               what, value)
     return (int(i), int(what[0]), float(value[0])) if i < n else None
 
 
@@ -156,11 +161,14 @@ def f32_wrong(contact, flat, s32):
     return (int(i), float(err[0])) if i < k else None
 
 
-def f32_wrong_error(what, shape, i, err, names, values):
-    """mdr.Error (MDR_E_PARAM, as the CLI's exit 2) for point i of f32_wrong."""
+def f32_wrong_error(what, shape, i, err, names, values, q="answer"):
+    """mdr.Error (MDR_E_PARAM, as the CLI's exit 2) for point i of f32_wrong
+    or f32_eq_check; q: what is off, "answer" (d, F, a stress), "dd_da" or
+    "dF_da" (an equilibrium's derivative), as the CLI names it."""
+    mx = lib.mdrpy_f32_answer_max() if q == "answer" else lib.mdrpy_f32_slope_max()
     return element_error(lib.MDR_E_PARAM, what, shape, i, names, values,
-                         hint="f32's answer is %.2g off f64's at the values given (more than %g); use arith='f64'" % (
-                             err, lib.mdrpy_f32_answer_max()))
+                         hint="f32's %s is %.2g off f64's at the values given (more than %g); use arith='f64'" % (
+                             q, err, mx))
 
 
 def f32_eq_error(what, shape, i, change, names, values):

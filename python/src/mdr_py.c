@@ -34,6 +34,11 @@ double mdrpy_f32_answer_max(void)
     return MDR_HOST_F32_ANSWER_MAX;
 }
 
+double mdrpy_f32_slope_max(void)
+{
+    return MDR_HOST_F32_SLOPE_MAX;
+}
+
 double mdrpy_f32_crit_max(void)
 {
     return MDR_HOST_F32_CRIT_MAX;
@@ -83,7 +88,7 @@ static int mdrpy_f32_inputs_exact(uint8_t kind, const double p[3], const double 
 
 size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
                           double w, size_t n, const double *a, const double *d, size_t k, const double *d32,
-                          const double *F32, int *what, double *value)
+                          const double *F32, const double *dd32, const double *dF32, int *what, double *value)
 {
     mdr_host_f32_eq_pair x;
     double *rd;
@@ -99,11 +104,15 @@ size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, cons
         /* (where every input is a float the change is 0: not computed) */
         const int rounded = !(exact && mdrpy_is_float(a[i]) && (d == NULL || mdrpy_is_float(d[i])));
         const double ans[2] = {i < k ? d32[i] : 0.0, i < k ? F32[i] : 0.0};
+        const double dv[2] = {dd32 != NULL && i < k ? dd32[i] : 0.0, dF32 != NULL && i < k ? dF32[i] : 0.0};
         double ch = 0.0, er = 0.0;
+        int q = 0;
         mdr_host_f32_eq_pair_check(&x, a[i], d != NULL ? &d[i] : NULL, rounded ? &ch : NULL, ans,
-                                   i < k ? &er : NULL);
-        if (ch > MDR_HOST_F32_EQ_MAX || er > MDR_HOST_F32_ANSWER_MAX) {
-            *what = ch > MDR_HOST_F32_EQ_MAX ? 0 : 1; /* (the rounding's first, as the CLI's order) */
+                                   dd32 != NULL ? dv : NULL, i < k ? &er : NULL, &q);
+        if (ch > MDR_HOST_F32_EQ_MAX || er > mdr_host_f32_max(q)) {
+            /* (the rounding's first, as the CLI's order; an answer's d or
+             * F: 1, its dd/da 2, dF/da 3) */
+            *what = ch > MDR_HOST_F32_EQ_MAX ? 0 : q < 2 ? 1 : q;
             *value = *what == 0 ? ch : er;
             break;
         }

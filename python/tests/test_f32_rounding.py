@@ -47,6 +47,8 @@ SCENES = {
     "sphere": (["--profile", "sphere", "--R", "1e-6"], dict(R=1e-6), 1e-6, -1.0),
     "flattip": (["--profile", "flattip", "--R", "1e-3", "--b", "5e-5"], dict(R=1e-3, b=5e-5), 5e-5, 1.0),
 }
+DERIV_WRONG = re.compile(r"^mdr: --a (\S+): f32's (dd_da|dF_da) is (\S+) off f64's at the values given \(more than "
+                         r"5e-05\): --arith f64$")
 REFUSED = re.compile(r"^mdr: --a (\S+): f32's rounding of the inputs to float (moves the state by (\S+) \(more than "
                      r"1\.5e-06\)|puts the state outside the profile): --arith f64$")
 
@@ -219,6 +221,18 @@ def test_states_as_cli(cli, name):
             rc, _, err = run_cli(cli, ["eq"] + opts + ["--E", "1e9", "--w", "0.05", "--a", a_txt, "--d", d_txt,
                                                        "--arith", "f32"])
             kind, got = python_f32(c32, a, d)
+            if rc == 2 and DERIV_WRONG.match(err.strip()):
+                # the CLI prints the equilibrium's dd/da and dF/da beside the
+                # state and checks them (stop 63); Python's State has no
+                # derivatives: it answers, within ST32 (near the sphere's
+                # a = R and the flattened tip's rim the rounding of a moves
+                # the derivatives 8e-5, d and F within 1.5e-6)
+                assert kind == "answer", (a_txt, d_txt, err, got)
+                _, eF = err64(c64, a, got.d, got.F, d=d)
+                assert within(eF, ST32, "state F"), (a_txt, d_txt, eF)
+                kind = "answer (derivatives refused by the CLI)"
+                n[kind] = n.get(kind, 0) + 1
+                continue
             if rc == 2:
                 m = REFUSED.match(err.strip())
                 assert m and kind == "refused" and got == m.group(2), (a_txt, d_txt, err, got)
@@ -227,8 +241,10 @@ def test_states_as_cli(cli, name):
                 _, eF = err64(c64, a, got.d, got.F, d=d)
                 assert within(eF, ST32, "state F"), (a_txt, d_txt, eF)
             n[kind] += 1
-    # (measured: sphere 50 answered, 8 refused; flattip 56, 2)
-    assert n["answer"] > 40 and n["refused"] > 0, n
+    # (measured: sphere 50 answered, 8 refused; flattip 56, 2; of the
+    # answered, the CLI refuses the equilibrium's derivatives at sphere 32,
+    # flattip 34, stop 63)
+    assert n["answer"] + n.get("answer (derivatives refused by the CLI)", 0) > 40 and n["refused"] > 0, n
 
 
 def tip_files(tmp_path):
@@ -503,3 +519,24 @@ def test_critical_check_at_the_flattened_tips_rim():
             v = [s.a, s.d, s.F, s.max_tensile_F]
             v[i] *= 1 + 1e-5
             assert 0.5e-5 <= err(*v) <= 2e-5, (control, i, err(*v))
+
+
+def test_derivatives_of_a_measured_tip(cli, tmp_path):
+    """The equilibrium's dd/da and dF/da (EqState, `mdr eq` prints them) are
+    checked too, on the sizes of their terms, within 5e-5 (stop 63): on the
+    quantized tip at 4.9017 and 5.36836667 nm f32's d and F are within 3e-7,
+    its dd/da was 8e-5 and 2.1e-4 off f64's (returned before); Python and
+    the CLI refuse them alike, and an array names its element."""
+    path, r, f = tip_files(tmp_path)["quantized"]
+    c32 = mdr.Contact("table", r=r, f=f, E=1e9, w=0.05, arith="f32")
+    for a_txt in ("4.9017e-09", "5.36836667e-09"):
+        rc, _, err = run_cli(cli, ["eq", "--profile", "table", "--file", path, "--E", "1e9", "--w", "0.05", "--a",
+                                   a_txt, "--arith", "f32"])
+        m = DERIV_WRONG.match(err.strip())
+        assert rc == 2 and m and m.group(2) == "dd_da", err
+        with pytest.raises(mdr.Error, match="f32's dd_da is %s off f64's" % re.escape(m.group(3))) as ei:
+            c32.eq(float(a_txt))
+        assert ei.value.status == "MDR_E_PARAM"
+    with pytest.raises(mdr.Error) as ei:
+        c32.eq([2e-9, 4.9017e-09])
+    assert ei.value.index == 1
