@@ -608,6 +608,108 @@ static void test_roundtrip_f32(void **state)
     print_message("closed-form round trip (f32): worst %.2g\n", worst);
 }
 
+/* Noise-free f32 fits through levers 100 to 10 000 times softer than the
+ * contact (2 E* a0 / k_m; mdr_fit.inc, mdr_f_gn_escape). Closed-form
+ * retracts (jkr_curve, R 20 nm, base offset 40 nm): every answer (status
+ * ok) must have E* and w each within SOFT32_ERRS of its reported errors or
+ * SOFT32_REL of the truth; a refusal passes. soft32[]: 8 curves that
+ * Levenberg-Marquardt, its step test met in the valley of E*, w and the
+ * fold's position (damped, not at the minimum), answered ok with w 0.11 %
+ * to 1.6 % off at 10 to 21 reported errors before the escape (the first 8
+ * such of the sweep below). The sweep: NSOFT32 draws in that lever ratio
+ * (E* 1e6 to 1e11 Pa, w 1e-3 to 1 J/m^2, k_m 0.01 to 100 N/m log-uniform;
+ * 80, 200 or 500 samples), reported, not asserted: measured 68 of 146
+ * answers beyond the bound before the escape, 31 of 147 with it (w up to
+ * 3 % off at up to 24 errors: the valley curved beyond Gauss-Newton's
+ * reach, the sum at its f32 rounding; docs/fitting.md); host only. */
+#define NSOFT32 150
+#define SOFT32_ERRS 3.0
+#define SOFT32_REL 1e-3
+static const double soft32[][4] = { /* E*, w, k_m, samples */
+    {11542769322.96981, 0.049565514194329356, 0.044228789591761908, 200},
+    {39948135289.300591, 0.015587718058331243, 0.037213156195122117, 500},
+    {31258636071.520149, 0.19710625350871949, 0.42387034450286809, 200},
+    {17209251062.564987, 0.0012330385633526257, 0.038722404368912167, 500},
+    {376865962.44773692, 0.76707594014891289, 0.029178540916652954, 200},
+    {8957282406.4328022, 0.15747038746348724, 0.042119222457034061, 500},
+    {45180001109.001709, 0.85144678577622812, 0.53437190886071673, 80},
+    {19413365023.241024, 0.062139138125863864, 0.26782975735961251, 500},
+};
+
+/* one curve: 1 when answered beyond the bound (printed), else 0; *ok
+ * counts the answers */
+static int soft32_fit(const jkr_par *p, int n, int *ok, int print)
+{
+    double Fpo;
+    int i;
+    mdr_contact_f32 c;
+    mdr_fit_opts_f32 o;
+    mdr_fit_result_f32 r;
+    float pp[3] = {20e-9f, 0, 0};
+    jkr_curve(p, 40e-9, 0.0, n, zs, Fs, 0, &Fpo);
+    for (i = 0; i < n; i++) {
+        zs32[i] = (float)zs[i];
+        Fs32[i] = (float)Fs[i];
+    }
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
+    mdr_fit_defaults_f32(&o, (float)p->km);
+    if (mdr_fit_curve_f32(&c, &o, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r) != MDR_OK) {
+        return 0;
+    }
+    (*ok)++;
+    {
+        const double eE = fabs(r.E / p->E - 1), ew = fabs(r.w / p->w - 1);
+        const double nE = fabs(r.E - p->E) / r.E_err, nw = fabs(r.w - p->w) / r.w_err;
+        if ((eE > SOFT32_REL && nE > SOFT32_ERRS) || (ew > SOFT32_REL && nw > SOFT32_ERRS)) {
+            if (print) {
+                print_message("f32 soft lever: E* %.17g, w %.17g, k_m %.17g, %d samples: E* %+.2g (%.1f errors), "
+                              "w %+.2g (%.1f errors), status ok\n",
+                              p->E, p->w, p->km, n, r.E / p->E - 1, nE, r.w / p->w - 1, nw);
+            }
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void test_f32_soft_lever(void **state)
+{
+    const int sizes[3] = {80, 200, 500};
+    int j, draws = 0, ok = 0, bad = 0;
+    (void)state;
+    for (j = 0; j < (int)(sizeof soft32 / sizeof soft32[0]); j++) {
+        const jkr_par p = {20e-9, soft32[j][0], soft32[j][1], soft32[j][2]};
+        bad += soft32_fit(&p, (int)soft32[j][3], &ok, 1);
+    }
+    print_message("f32 soft lever, the 8 curves: %d answered, %d beyond %g errors and %g\n", ok, bad, SOFT32_ERRS,
+                  SOFT32_REL);
+    assert_int_equal(bad, 0);
+#ifndef MDR_TARGET_TEST /* (the sweep: host only) */
+    noise_state = 0x5eed5eed12345ull;
+    for (j = 0, ok = 0; j < NSOFT32;) {
+        jkr_par p;
+        int n;
+        p.R = 20e-9;
+        p.E = pow(10.0, 6.0 + 5.0 * noise_uniform());
+        p.w = pow(10.0, -3.0 + 3.0 * noise_uniform());
+        p.km = pow(10.0, -2.0 + 4.0 * noise_uniform());
+        n = sizes[(int)(3.0 * noise_uniform()) % 3];
+        draws++;
+        if (!(2 * p.E * jkr_a0(&p) / p.km >= 100.0 && 2 * p.E * jkr_a0(&p) / p.km <= 1e4)) {
+            continue;
+        }
+        j++;
+        bad += soft32_fit(&p, n, &ok, 0);
+    }
+    print_message("f32 soft lever, noise-free sweep: %d of %d answered (%d draws), %d beyond %g errors and %g "
+                  "(measured, not asserted)\n",
+                  ok, NSOFT32, draws, bad, SOFT32_ERRS, SOFT32_REL);
+#else
+    (void)sizes;
+    (void)draws;
+#endif
+}
+
 /* ---- noise ------------------------------------------------------------------ */
 
 #ifdef MDR_TARGET_TEST
@@ -3517,8 +3619,8 @@ static void test_fold_saddle(void **state)
  * variance of 1/4 at such a saddle left out (fit-fold-var-saddle): w
  * 2.5e-6 to 4.8e-5 low (about 5 % of w a step) with reported errors of
  * 1.4e-8 to 2.2e-7 of it, 100 to 218 errors off, flat and sloped alike.
- * Measured (this commit): all 28 fits refused (MDR_E_DEGENERATE), under
- * 0.1 s. */
+ * Measured: all 28 fits refused (MDR_E_DEGENERATE), under 0.1 s; since
+ * mdr_f_gn_escape 22 of 28 answered, within 1.66 errors of the truth. */
 static const double saddle_nf[][5] = { /* R, E*, w, k_m, the fold's fraction of a step */
     {1.2150039787506154e-05, 1288396.4489125495, 0.00026084744972124866, 2.8485441420305611e-06, 0.00012614124506844099},
     {7.219046015555128e-06, 51226452019.824265, 0.0052692819948957992, 0.0068903029347781933, 0.00095470075348555092},
@@ -3732,6 +3834,7 @@ int main(void)
         cmocka_unit_test(test_roundtrip_closed_form),
         cmocka_unit_test(test_roundtrip_profiles),
         cmocka_unit_test(test_roundtrip_f32),
+        cmocka_unit_test(test_f32_soft_lever),
         cmocka_unit_test(test_noise),
         cmocka_unit_test(test_pinned_top),
         cmocka_unit_test(test_pinned_rupture),
