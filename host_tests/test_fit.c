@@ -618,11 +618,14 @@ static void test_roundtrip_f32(void **state)
  * to 1.6 % off at 10 to 21 reported errors before the escape (the first 8
  * such of the sweep below). The sweep: NSOFT32 draws in that lever ratio
  * (E* 1e6 to 1e11 Pa, w 1e-3 to 1 J/m^2, k_m 0.01 to 100 N/m log-uniform;
- * 80, 200 or 500 samples), reported, not asserted: measured 68 of 146
- * answers beyond the bound before the escape, 31 of 147 with it (w up to
- * 3 % off at up to 24 errors: the valley curved beyond Gauss-Newton's
- * reach, the sum at its f32 rounding; docs/fitting.md); host only. */
+ * 80, 200 or 500 samples): measured 68 of 146 answers beyond the bound
+ * before the escape, 31 of 147 with it (w up to 3 % off at up to 24
+ * errors: the valley curved beyond Gauss-Newton's reach, the sum at its
+ * f32 rounding; docs/fitting.md, not yet fixed), held at SOFT32_SWEEP_MAX
+ * (a regression guard; the margin for another compiler's rounding of the
+ * f32 model); host only. */
 #define NSOFT32 150
+#define SOFT32_SWEEP_MAX 36
 #define SOFT32_ERRS 3.0
 #define SOFT32_REL 1e-3
 static const double soft32[][4] = { /* E*, w, k_m, samples */
@@ -702,8 +705,9 @@ static void test_f32_soft_lever(void **state)
         bad += soft32_fit(&p, n, &ok, 0);
     }
     print_message("f32 soft lever, noise-free sweep: %d of %d answered (%d draws), %d beyond %g errors and %g "
-                  "(measured, not asserted)\n",
-                  ok, NSOFT32, draws, bad, SOFT32_ERRS, SOFT32_REL);
+                  "(at most %d)\n",
+                  ok, NSOFT32, draws, bad, SOFT32_ERRS, SOFT32_REL, SOFT32_SWEEP_MAX);
+    assert_true(bad <= SOFT32_SWEEP_MAX);
 #else
     (void)sizes;
     (void)draws;
