@@ -723,9 +723,11 @@ static const char usage_main[] =
     "Every flag is --flag VALUE or --flag=VALUE, given once; SI units (m, N, Pa, J/m^2).\n"
     "Results on stdout, errors on stderr (one line). Exit status: 0 ok, 1 a computation\n"
     "that fails (iteration cap, edge beyond the table, q31 results saturated, results\n"
-    "that cannot be written), 2 bad arguments or input. In f32, eq, curve, stress and\n"
-    "critical refuse (exit 2) a state that the rounding of its inputs to float moves, or\n"
-    "that f32's answer misses, by more than f32's goal against f64: take --arith f64.\n"
+    "that cannot be written), 2 bad arguments or input, including input the library\n"
+    "refuses by name (in f32 a state beyond float's range: MDR_E_OVERFLOW, take f64).\n"
+    "In f32, eq, curve, stress and critical refuse (exit 2) a state that the rounding\n"
+    "of its inputs to float moves, or that f32's answer misses, by more than f32's goal\n"
+    "against f64: take --arith f64.\n"
     "mdr --version: the library's version.\n";
 
 static const char *const usage_cmd[NCMD] = {
