@@ -161,6 +161,28 @@ def f32_wrong(contact, flat, s32):
     return (int(i), float(err[0])) if i < k else None
 
 
+def f32_range_first(flat):
+    """(i, name index) of the first element of the flat inputs beyond float's
+    range (nonzero and below its normal range, or finite and above it), or
+    None: the f32 calls refuse it as the CLI refuses such a flag (`outside
+    the range of --arith f32`), not through a check that happens to see it
+    (a d of 1e-50 was taken as 0 and answered, stop 62's review)."""
+    first = None
+    for k, v in enumerate(flat):
+        bad = np.flatnonzero(((v != 0) & (np.abs(v) < FLT_MIN)) | ((np.abs(v) > FLT_MAX) & np.isfinite(v)))
+        if bad.size and (first is None or bad[0] < first[0]):
+            first = (int(bad[0]), k)
+    return first
+
+
+def f32_range_error(what, shape, i, k, names, values):
+    """mdr.Error (MDR_E_OVERFLOW, as narrow's) for element i of
+    f32_range_first, naming the input k."""
+    return element_error(lib.MDR_E_OVERFLOW, what, shape, i, names, values,
+                         hint="%s = %.9g: outside the range of arith='f32' (0 or |v| in [%.9g, %.9g])" % (
+                             names[k], values[k][i], FLT_MIN, FLT_MAX))
+
+
 def f32_wrong_error(what, shape, i, err, names, values, q="answer"):
     """mdr.Error (MDR_E_PARAM, as the CLI's exit 2) for point i of f32_wrong
     or f32_eq_check; q: what is off, "answer" (d, F, a stress), "dd_da" or

@@ -9,7 +9,7 @@ import types
 import numpy as np
 
 from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq_check, f32_eq_error,
-                    f32_shape, f32_wrong, f32_wrong_error, ffi, lib, narrow, real_array, shaped, shaped_bool)
+                    f32_range_error, f32_range_first, f32_shape, f32_wrong, f32_wrong_error, ffi, lib, narrow, real_array, shaped, shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -206,6 +206,11 @@ class Contact:
         (f32_wrong)."""
         shape, flat = broadcast(what, names, inputs)
         n = flat[0].size
+        beyond = f32_range_first(flat) if self.arith == "f32" else None
+        if beyond is not None:  # (the points before it computed and checked, then it refused)
+            shape0, flat0 = shape, flat
+            flat = [v[:beyond[0]] for v in flat]
+            n = beyond[0]
         out = np.empty((ncols, n))
         flags = np.empty((nflags, n), dtype=np.uint8) if nflags else None
         fail = ffi.new("size_t *")
@@ -237,6 +242,8 @@ class Contact:
                     raise f32_wrong_error(what, shape, i, v, names, flat, q={2: "dd_da", 3: "dF_da"}.get(why, "answer"))
         if st != lib.MDR_OK:
             raise element_error(st, what, shape, fail[0], names, flat)
+        if beyond is not None:
+            raise f32_range_error(what, shape0, beyond[0], beyond[1], names, flat0)
         return shape, out, flags, flat
 
     def eq(self, a, d=None):

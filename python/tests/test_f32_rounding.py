@@ -540,3 +540,30 @@ def test_derivatives_of_a_measured_tip(cli, tmp_path):
     with pytest.raises(mdr.Error) as ei:
         c32.eq([2e-9, 4.9017e-09])
     assert ei.value.index == 1
+
+
+@pytest.mark.parametrize("args", [["eq", "--a", "1e-50"], ["eq", "--a", "1e-40"], ["eq", "--a", "1e-7", "--d", "1e-50"],
+                                  ["eq", "--a", "1e-7", "--d", "-1e-40"], ["eq", "--a", "1e-7", "--d", "1e39"],
+                                  ["stress", "--a", "1e-7", "--r", "1e-50"]])
+def test_beyond_float_as_cli(cli, args):
+    """An element beyond float's range (nonzero below its normal range, or
+    above it) is refused by name, MDR_E_OVERFLOW, as the CLI refuses the flag
+    (`outside the range of --arith f32`, exit 2); before, Python took a d of
+    1e-50 as 0 and answered, or refused it through a check that happened to
+    see it, in other words (stop 62's review). In an array the elements
+    before it are computed and checked first, as everywhere."""
+    rc, _, err = run_cli(cli, args[:1] + ["--profile", "paraboloid", "--R", "1e-6", "--E", "1e9", "--w", "0.05"]
+                         + args[1:])
+    assert rc == 2 and "outside the range of --arith f32" in err, err
+    c = mdr.Contact("paraboloid", R=1e-6, E=1e9, w=0.05, arith="f32")
+    v = {args[i].lstrip("-"): float(args[i + 1]) for i in range(1, len(args), 2)}
+    call = (lambda: c.eq(v["a"], d=v.get("d"))) if args[0] == "eq" else (lambda: c.stress(v["a"], v["r"]))
+    with pytest.raises(mdr.Error, match="outside the range of arith='f32'") as ei:
+        call()
+    assert ei.value.status == "MDR_E_OVERFLOW" and ei.value.index is None
+    with pytest.raises(mdr.Error) as ei:  # the earlier element's refusal first
+        c.eq([1e-7, -1e-7, 1e-40])
+    assert ei.value.status == "MDR_E_RADIUS" and ei.value.index == 1
+    with pytest.raises(mdr.Error, match="outside the range") as ei:
+        c.eq([1e-7, 2e-7, 1e-40])
+    assert ei.value.index == 2
