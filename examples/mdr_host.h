@@ -143,14 +143,9 @@ static inline int mdr_host_eq64_c(const mdr_contact_f64 *c, double E, double a, 
     o[3] = o[3] > 2.0 * E * e.a * e.dl ? o[3] : 2.0 * E * e.a * e.dl;
     o[4] = e.dd_da;
     o[5] = e.dF_da;
-    {
-        double g, gp;
-        if (mdr_profile_eval_f64(c, e.a, &g, &gp, NULL) != MDR_OK) {
-            gp = 0.0; /* (not at a: the equilibrium answered there) */
-        }
-        o[6] = fabs(gp) + 0.5 * e.dl / e.a;
-        o[7] = 2.0 * E * (e.a * o[6] + e.dl);
-    }
+    /* (g' = dd/da + dl/(2a): the two terms without another evaluation) */
+    o[6] = fabs(e.dd_da + 0.5 * e.dl / e.a) + 0.5 * e.dl / e.a;
+    o[7] = 2.0 * E * (e.a * o[6] + e.dl);
     return o[0] - o[0] == 0.0 && o[1] - o[1] == 0.0;
 }
 
