@@ -109,14 +109,18 @@ def f32_shape(kind, p, names, where):
                     ", or the cone as Contact('powerlaw', C=tan(theta), n=1)" if kind == lib.MDR_PROFILE_CONE else ""))
 
 
-def _f32_head(contact, k, a, d):
-    """The contact and points of the f32 checks (mdr_py.h): a sampled tip's
-    radii and slopes (the cdata formed as the contact formed them) or the
-    analytic (kind, p); E, w as given; k points a (and d, or NULL)."""
+def f32_contact_args(contact):
+    """The contact as the f32 checks take it (mdr_py.h): kind, p, a sampled
+    tip's radii and slopes (the cdata formed as the contact formed them) or
+    NULL for an analytic profile, their count, E and w as given."""
     tip = contact.kind == lib.MDR_PROFILE_TABLE
     return (contact.kind, [float(v) for v in contact.p], dptr(contact.r) if tip else ffi.NULL,
-            contact._slopes if tip else ffi.NULL, contact.r.size if tip else 0, contact.E, contact.w, k, dptr(a),
-            dptr(d) if d is not None else ffi.NULL)
+            contact._slopes if tip else ffi.NULL, contact.r.size if tip else 0, contact.E, contact.w)
+
+
+def _f32_head(contact, k, a, d):
+    """f32_contact_args and the k points a (and d, or NULL)."""
+    return f32_contact_args(contact) + (k, dptr(a), dptr(d) if d is not None else ffi.NULL)
 
 
 def f32_eq_check(contact, flat, k, d32, F32, dd32=None, dF32=None):

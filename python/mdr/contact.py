@@ -8,8 +8,9 @@ import types
 
 import numpy as np
 
-from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_eq_check, f32_eq_error,
-                    f32_range_error, f32_range_first, f32_shape, f32_wrong, f32_wrong_error, ffi, lib, narrow, real_array, shaped, shaped_bool)
+from ._core import (Error, broadcast, check, control_code, dptr, element_error, f32_contact_args, f32_eq_check,
+                    f32_eq_error, f32_range_error, f32_range_first, f32_shape, f32_wrong, f32_wrong_error, ffi, lib,
+                    narrow, real_array, shaped, shaped_bool)
 
 #: profile name -> (MDR_PROFILE_*, its parameters in the order of p[0..2])
 PROFILES = {
@@ -318,12 +319,9 @@ class Contact:
         if self.arith == "f32":
             # f32's state against f64's at the values given, as `mdr critical
             # --arith f32` checks it (mdrpy_f32_crit_wrong)
-            tip = self.kind == lib.MDR_PROFILE_TABLE
             a0 = ffi.new("double *", float(given)) if given is not None else ffi.NULL
-            er = lib.mdrpy_f32_crit_wrong(self.kind, [float(v) for v in self.p], dptr(self.r) if tip else ffi.NULL,
-                                          self._slopes if tip else ffi.NULL, self.r.size if tip else 0, self.E,
-                                          self.w, ctl, 0.0 if k_machine is None else float(k_machine), a0,
-                                          float(out.a), float(out.d), float(out.F), float(out.F_min))
+            er = lib.mdrpy_f32_crit_wrong(*f32_contact_args(self), ctl, 0.0 if k_machine is None else float(k_machine),
+                                          a0, float(out.a), float(out.d), float(out.F), float(out.F_min))
             if er > lib.mdrpy_f32_crit_max():
                 raise Error(lib.MDR_E_PARAM, what, hint="f32's critical state is %.2g off f64's at the values given "
                             "(more than %g); use arith='f64'" % (er, lib.mdrpy_f32_crit_max()))
