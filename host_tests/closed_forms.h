@@ -53,4 +53,66 @@ __attribute__((unused)) static void profile_cf(uint8_t k, const double p[3], dou
     }
 }
 
+/* The work int F dd of one JKR cycle of the paraboloid (g = x^2/R, seed
+ * 4.28) with w_adv on approach and w on retraction, under fixed load or
+ * fixed grips (ctl), up to the radius a_max and back past the pull-off.
+ * Along a branch of c = sqrt(2 pi w/E*) (dl = c sqrt(a), 4.21), with
+ * s = sqrt(a): d = s^4/R - c s and F = 2E*(a d - a^3/(3R))
+ * = 4E* s^6/(3R) - 2E* c s^3 (JKR), so that F dd = F d'(s) ds and
+ *   int F dd = P(s_B) - P(s_A),
+ *   P(s) = 8E* s^10/(15 R^2) - 4E* c s^7/(3R) + E* c^2 s^4/2.
+ * The cycle: the jump-in at the touch (constant control: no work) onto the
+ * approach branch where the control is 0 (load: s^3 = 3R c_adv/2; grips:
+ * s^3 = R c_adv), along it to a_max, pinned there down to the retraction
+ * branch (F linear in d: the trapezoid), along that to its fold (load:
+ * s^3 = 3R c_w/4; grips: s^3 = R c_w/4) and the pull-off (constant
+ * control: no work). Also: the gross work (the sum of |int F dd| over the
+ * pieces), the peak control and the pull-off's control. */
+__attribute__((unused)) static double jkr_P(double E_, double R, double c, double s)
+{
+    const double s3 = s * s * s;
+    return s3 * s * (8 * E_ * s3 * s3 / (15 * R * R) - 4 * E_ * c * s3 / (3 * R) + E_ * c * c / 2);
+}
+
+__attribute__((unused)) static double jkr_cycle_work(double E_, double R, double w, double wa, uint8_t ctl,
+                                                     double a_max, double *gross, double *u_max, double *u_off)
+{
+    const double cw = sqrt(2 * M_PI * w / E_), ca = sqrt(2 * M_PI * wa / E_), sm = sqrt(a_max);
+    const double sin = cbrt(ctl == MDR_CONTROL_LOAD ? 1.5 * R * ca : R * ca);
+    const double sf = cbrt(ctl == MDR_CONTROL_LOAD ? 0.75 * R * cw : 0.25 * R * cw);
+    const double da = a_max * a_max / R - ca * sm, dw = a_max * a_max / R - cw * sm;
+    const double Fa = 2 * E_ * (a_max * da - a_max * a_max * a_max / (3 * R));
+    const double Fw = 2 * E_ * (a_max * dw - a_max * a_max * a_max / (3 * R));
+    const double w1 = jkr_P(E_, R, ca, sm) - jkr_P(E_, R, ca, sin), w2 = 0.5 * (Fa + Fw) * (dw - da);
+    const double w3 = jkr_P(E_, R, cw, sf) - jkr_P(E_, R, cw, sm);
+    const double af = sf * sf, df = af * af / R - cw * sf;
+    *gross = fabs(w1) + fabs(w2) + fabs(w3);
+    *u_max = ctl == MDR_CONTROL_LOAD ? Fa : da;
+    *u_off = ctl == MDR_CONTROL_LOAD ? 2 * E_ * (af * df - af * af * af / (3 * R)) : df;
+    return w1 + w2 + w3;
+}
+
+/* The energy tests' JKR scenes (test_engine's energy_any_tick, test_scene's,
+ * test_q31's): the JKR scene of CHECK_VALUES with w_adv = 0.4 w to 8 um;
+ * helper-31's 1 mm sphere of stop 58, E* = 10 GPa, w_adv = 0.99 w, to 72 um
+ * (about 5 N under load), which stores some 2e6 times what it dissipates;
+ * the first without adhesion */
+typedef struct {
+    double R, E, w, wa, a_max;
+} jkr_scene;
+__attribute__((unused)) static const jkr_scene jkr_scenes[3] = {
+    {10e-6, 1e6, 0.05, 0.02, 8e-6}, {1e-3, 1e10, 0.05, 0.0495, 7.2e-5}, {10e-6, 1e6, 0, 0, 8e-6}};
+
+/* jkr_cycle_work of scene sc under ctl, and the end of its path: past the
+ * pull-off (1.5 times its control), without adhesion below 0 (-0.1 times
+ * the peak) */
+__attribute__((unused)) static double jkr_cycle(const jkr_scene *sc, uint8_t ctl, double *gross, double *u_max,
+                                                double *u_end)
+{
+    double u_off;
+    const double want = jkr_cycle_work(sc->E, sc->R, sc->w, sc->wa, ctl, sc->a_max, gross, u_max, &u_off);
+    *u_end = u_off != 0 ? 1.5 * u_off : -0.1 * *u_max;
+    return want;
+}
+
 #endif /* MDR_CLOSED_FORMS_H */

@@ -76,7 +76,12 @@ typedef struct {
 /** Energy bookkeeping of every engine of this arithmetic: embedded in a
  *  spring engine (.en), caller-owned for a scene. The work of the contact
  *  force, int F dd, is summed per cycle (a cycle ends with a complete
- *  separation), so its rounding does not grow with the number of cycles. */
+ *  separation), so its rounding does not grow with the number of cycles.
+ *  Each tick's work is exact whatever the tick, to the arithmetic's
+ *  rounding of the states: on a moving edge the change of the elastic
+ *  energy less the work of adhesion (seed 4.21), not a quadrature of F
+ *  over d; a jump at constant control and a pinned stretch by the
+ *  trapezoid, exact there. */
 typedef struct {
     double work;         /**< int F dd since the last complete separation [J] */
     double work_c;       /**< compensation term of that sum (Kahan) */
@@ -146,6 +151,8 @@ typedef struct {
     uint8_t flags;   /**< sticky MDR_FLAG_* */
     uint8_t outputs; /**< MDR_OUT_* (init: MDR_OUT_ALL | MDR_OUT_ENERGY) */
     uint8_t mode;    /**< control mode (MDR_CONTROL_*) of the pinned edge, bit 7 set while a move has left its linear coefficients (pin) to the next pinned tick; 0 exactly when separated */
+    double mv_c, mv_d; /**< internal: where the step's last fast move began (the edge's
+                           coordinate in the engine's units, d [m]), for its work (MDR_OUT_ENERGY) */
 } mdr_engine_f64;
 
 /** What one step did. All SI; "before"/"after" describe the last jump of

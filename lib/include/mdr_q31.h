@@ -180,6 +180,8 @@ typedef struct {
     uint8_t flags;   /**< sticky MDR_FLAG_* (MDR_FLAG_SAT: a value saturated) */
     uint8_t outputs; /**< MDR_OUT_* (init: MDR_OUT_ALL | MDR_OUT_ENERGY) */
     uint8_t mode;    /**< control mode (MDR_CONTROL_*) of the pinned edge, bit 7 set while a move has left its linear coefficients (pin) to the next pinned tick; 0 exactly when separated */
+    int32_t mv_c, mv_d; /**< internal: where the step's last fast move began (the edge's
+                             coordinate, d raw), for its work (MDR_OUT_ENERGY) */
 } mdr_engine_q31;
 
 /** What one q31 step did (formats above; fields as mdr_step_f32). */

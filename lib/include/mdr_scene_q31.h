@@ -87,6 +87,8 @@ typedef struct {
     uint8_t flags;        /**< sticky MDR_FLAG_* (MDR_FLAG_SAT, MDR_FLAG_OUTSIDE, MDR_FLAG_NOCONV) */
     uint8_t outputs;      /**< MDR_OUT_* of the float scene (MDR_OUT_ENERGY: en kept) */
     uint8_t mode;         /**< control mode (MDR_CONTROL_*) of the pinned edge, bit 7 set while a move has left its linear coefficients (pin) to the next pinned tick; 0 exactly when separated */
+    int32_t mv_c, mv_d; /**< internal: where the step's last fast move began (the edge's
+                             coordinate, d raw), for its work (MDR_OUT_ENERGY) */
 } mdr_scene_q31;
 
 #if MDR_CFG_F32

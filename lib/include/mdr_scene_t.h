@@ -65,6 +65,8 @@ typedef struct {
     uint8_t contact; /**< 1 in contact, 0 separated */
     uint8_t touched; /**< 1 once the scene has been in contact */
     uint8_t flags;   /**< sticky MDR_FLAG_* (MDR_FLAG_NOCONV) */
+    MDR_T mv_c, mv_d; /**< internal: where the step's last fast move began (the edge's
+                           coordinate in the engine's units, d [m]), for its work (MDR_OUT_ENERGY) */
 } MDR_SFX(mdr_scene);
 
 #if MDR_CFG_SCENE
