@@ -1089,9 +1089,9 @@ static void scene_energy_any_tick(void **state)
             double gross, u_max, u_end;
             const double want = jkr_cycle(&sc[i], ctl, &gross, &u_max, &u_end);
             for (j = 0; j < 4; j++) {
-                mdr_scene_f64 s64, r64;
+                mdr_scene_f64 s64;
                 mdr_scene_f32 s32;
-                mdr_energy_f64 en64, er64;
+                mdr_energy_f64 en64;
                 mdr_energy_f32 en32;
                 mdr_step_f64 o;
                 mdr_step_f32 o32;
@@ -1118,6 +1118,8 @@ static void scene_energy_any_tick(void **state)
 #if MDR_CFG_Q31
                 {
                     mdr_scene_q31 q;
+                    mdr_scene_f64 r64;
+                    mdr_energy_f64 er64;
                     double unit;
                     assert_int_equal(mdr_scene_init_paraboloid_f64(&r64, sc[i].R, sc[i].E, sc[i].w, sc[i].wa, 0,
                                                                    MDR_OUT_ALL, &er64),
