@@ -74,8 +74,11 @@ __attribute__((unused)) static double jkr_P(double E_, double R, double c, doubl
     return s3 * s * (8 * E_ * s3 * s3 / (15 * R * R) - 4 * E_ * c * s3 / (3 * R) + E_ * c * c / 2);
 }
 
-__attribute__((unused)) static double jkr_cycle_work(double E_, double R, double w, double wa, uint8_t ctl,
-                                                     double a_max, double *gross, double *u_max, double *u_off)
+/* (the work from the touch to the retraction branch's state at radius a,
+ * a_f <= a <= a_max; a < 0: to its fold a_f, the whole cycle's) */
+__attribute__((unused)) static double jkr_work_to(double E_, double R, double w, double wa, uint8_t ctl,
+                                                  double a_max, double a, double *gross, double *u_max,
+                                                  double *u_off)
 {
     const double cw = sqrt(2 * M_PI * w / E_), ca = sqrt(2 * M_PI * wa / E_), sm = sqrt(a_max);
     const double sin = cbrt(ctl == MDR_CONTROL_LOAD ? 1.5 * R * ca : R * ca);
@@ -84,12 +87,47 @@ __attribute__((unused)) static double jkr_cycle_work(double E_, double R, double
     const double Fa = 2 * E_ * (a_max * da - a_max * a_max * a_max / (3 * R));
     const double Fw = 2 * E_ * (a_max * dw - a_max * a_max * a_max / (3 * R));
     const double w1 = jkr_P(E_, R, ca, sm) - jkr_P(E_, R, ca, sin), w2 = 0.5 * (Fa + Fw) * (dw - da);
-    const double w3 = jkr_P(E_, R, cw, sf) - jkr_P(E_, R, cw, sm);
+    const double w3 = jkr_P(E_, R, cw, a < 0 ? sf : sqrt(a)) - jkr_P(E_, R, cw, sm);
     const double af = sf * sf, df = af * af / R - cw * sf;
     *gross = fabs(w1) + fabs(w2) + fabs(w3);
     *u_max = ctl == MDR_CONTROL_LOAD ? Fa : da;
     *u_off = ctl == MDR_CONTROL_LOAD ? 2 * E_ * (af * df - af * af * af / (3 * R)) : df;
     return w1 + w2 + w3;
+}
+
+__attribute__((unused)) static double jkr_cycle_work(double E_, double R, double w, double wa, uint8_t ctl,
+                                                     double a_max, double *gross, double *u_max, double *u_off)
+{
+    return jkr_work_to(E_, R, w, wa, ctl, a_max, -1, gross, u_max, u_off);
+}
+
+/* The same cycle's dissipation as the sum of what each part dissipates
+ * where it arises, which no stored energy swamps (mdr_energy's comment):
+ * the work less the change of the elastic energy
+ * Psi(a, d) = E* int_0^a (d - x^2/R)^2 dx = E* (a d^2 - 2 d a^3/(3R) + a^5/(5R^2)).
+ * Along a branch that is the work of adhesion, -w_adv pi (a_max^2 - a_in^2)
+ * on the approach and w pi (a_max^2 - a_f^2) on the retraction; pinned,
+ * nothing; the jump-in from (a, d) = (0, 0) to (a_in, d_in) at its
+ * constant control, whose work (F = 0 or d = 0 throughout) is 0, less
+ * Psi(a_in, d_in); the pull-off from the fold (a_f, d_f) at d = d_f (load:
+ * F = 0 after it, d where contact was lost; grips), whose work is 0, less
+ * -Psi(a_f, d_f). Worked out here from the JKR branches, independently of
+ * jkr_cycle_work (the loop's area), which it equals in exact arithmetic. */
+__attribute__((unused)) static double jkr_psi(double E_, double R, double a, double d)
+{
+    return E_ * a * (d * d - 2 * d * a * a / (3 * R) + a * a * a * a / (5 * R * R));
+}
+
+__attribute__((unused)) static double jkr_cycle_loss(double E_, double R, double w, double wa, uint8_t ctl,
+                                                     double a_max)
+{
+    const double cw = sqrt(2 * M_PI * w / E_), ca = sqrt(2 * M_PI * wa / E_);
+    const double sin = cbrt(ctl == MDR_CONTROL_LOAD ? 1.5 * R * ca : R * ca);
+    const double sf = cbrt(ctl == MDR_CONTROL_LOAD ? 0.75 * R * cw : 0.25 * R * cw);
+    const double ain = sin * sin, af = sf * sf;
+    const double din = ain * ain / R - ca * sin, df = af * af / R - cw * sf;
+    return -wa * M_PI * (a_max * a_max - ain * ain) + w * M_PI * (a_max * a_max - af * af) -
+           jkr_psi(E_, R, ain, din) + jkr_psi(E_, R, af, df);
 }
 
 /* The energy tests' JKR scenes (test_engine's energy_any_tick, test_scene's,

@@ -1071,15 +1071,23 @@ static void scene_machine_sweep(void **state)
  * TOL_EN_TICK64, _32 as the spring engine's (measured 2.2e-16 and
  * 6.7e-8), TOL_EN_TICK_Q31 = 1e-6 of it between q31 and f64 (measured
  * 1.7e-7: the q31 states' error, up to ~100 LSB of Q2.29 in d before a
- * pull-off under load, TOL_Q31_LSB, times the force there). */
+ * pull-off under load, TOL_Q31_LSB, times the force there). And of the
+ * dissipation itself, against the cycle's losses where they arise
+ * (jkr_cycle_loss; mdr_energy's loss, stop 65): TOL_EN_LOOP64 = 1e-12,
+ * TOL_EN_LOOP32 = 1e-4 as test_engine's, TOL_EN_LOOP_Q31 = 1e-6 between
+ * q31 and f64 (measured below; summed as work, stop 64, f32 resolved the
+ * second scene's only to 5 %). */
 #define TOL_EN_TICK64 1e-14
 #define TOL_EN_TICK32 1e-6
 #define TOL_EN_TICK_Q31 1e-6
+#define TOL_EN_LOOP64 1e-12
+#define TOL_EN_LOOP32 1e-4
+#define TOL_EN_LOOP_Q31 1e-6
 static void scene_energy_any_tick(void **state)
 {
     const jkr_scene *sc = jkr_scenes;
     static const long ticks[4] = {3, 10, 100, 1000};
-    double worst64 = 0, worst32 = 0, worstq = 0;
+    double worst64 = 0, worst32 = 0, worstq = 0, loop64 = 0, loop32 = 0, loopq = 0, work64 = 0, workq = 0;
     int i, j, c;
     long k;
     (void)state;
@@ -1088,6 +1096,7 @@ static void scene_energy_any_tick(void **state)
             const uint8_t ctl = c == 0 ? MDR_CONTROL_LOAD : MDR_CONTROL_GRIPS;
             double gross, u_max, u_end;
             const double want = jkr_cycle(&sc[i], ctl, &gross, &u_max, &u_end);
+            const double loss = jkr_cycle_loss(sc[i].E, sc[i].R, sc[i].w, sc[i].wa, ctl, sc[i].a_max);
             for (j = 0; j < 4; j++) {
                 mdr_scene_f64 s64;
                 mdr_scene_f32 s32;
@@ -1106,8 +1115,22 @@ static void scene_energy_any_tick(void **state)
                 for (k = 1; k <= 2 * n; k++) {
                     const double u = k <= n ? u_max * (double)k / (double)n
                                             : u_max + (u_end - u_max) * (double)(k - n) / (double)n;
+                    double g2, um, uo;
                     assert_int_equal(step_scene64(&s64, ctl, u, &o), MDR_OK);
                     assert_int_equal(step_scene32(&s32, ctl, (float)u, &o32), MDR_OK);
+                    /* the work so far at each state of the retraction branch
+                     * (en.work, reset at the cycle's end) */
+                    if (k > n && s64.contact && o.a < sc[i].a_max) {
+                        const double wt =
+                            jkr_work_to(sc[i].E, sc[i].R, sc[i].w, sc[i].wa, ctl, sc[i].a_max, o.a, &g2, &um, &uo);
+                        rel_le(en64.work - en64.work_c, wt, gross, TOL_EN_TICK64, "f64 scene work to a state");
+                        work64 = fmax(work64, fabs(en64.work - en64.work_c - wt) / gross);
+                    }
+                    if (k > n && s32.contact && o32.a < (float)sc[i].a_max) {
+                        const double wt =
+                            jkr_work_to(sc[i].E, sc[i].R, sc[i].w, sc[i].wa, ctl, sc[i].a_max, o32.a, &g2, &um, &uo);
+                        rel_le(en32.work - en32.work_c, wt, gross, TOL_EN_TICK32, "f32 scene work to a state");
+                    }
                 }
                 assert_int_equal(en64.cycles, 1);
                 assert_int_equal(en32.cycles, 1);
@@ -1115,6 +1138,14 @@ static void scene_energy_any_tick(void **state)
                 rel_le(en32.last_cycle, want, gross, TOL_EN_TICK32, "f32 scene cycle work at any tick");
                 worst64 = fmax(worst64, fabs(en64.last_cycle - want) / gross);
                 worst32 = fmax(worst32, fabs(en32.last_cycle - want) / gross);
+                if (loss != 0) {
+                    rel_le(en64.last_cycle, loss, 0, TOL_EN_LOOP64, "f64 scene cycle's dissipation");
+                    rel_le(en32.last_cycle, loss, 0, TOL_EN_LOOP32, "f32 scene cycle's dissipation");
+                    loop64 = fmax(loop64, fabs(en64.last_cycle / loss - 1));
+                    loop32 = fmax(loop32, fabs(en32.last_cycle / loss - 1));
+                } else {
+                    assert_true(en64.last_cycle == 0 && en32.last_cycle == 0);
+                }
 #if MDR_CFG_Q31
                 {
                     mdr_scene_q31 q;
@@ -1139,20 +1170,36 @@ static void scene_energy_any_tick(void **state)
                         assert_int_equal(ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, raw, &oq)
                                                                   : mdr_scene_step_F_q31(&q, raw, &oq),
                                          MDR_OK);
+                        if (k > n && q.contact && r64.contact && o.a < sc[i].a_max) {
+                            rel_le(mdr_scene_q31_energy(&q, q.en.work), er64.work - er64.work_c, gross,
+                                   TOL_EN_TICK_Q31, "q31 scene work to a state");
+                            workq = fmax(workq,
+                                         fabs(mdr_scene_q31_energy(&q, q.en.work) - (er64.work - er64.work_c)) / gross);
+                        }
                     }
                     assert_int_equal(q.en.cycles, 1);
                     assert_int_equal(er64.cycles, 1);
                     rel_le(mdr_scene_q31_energy(&q, q.en.last_cycle), er64.last_cycle, gross, TOL_EN_TICK_Q31,
                            "q31 scene cycle work at any tick");
                     worstq = fmax(worstq, fabs(mdr_scene_q31_energy(&q, q.en.last_cycle) - er64.last_cycle) / gross);
+                    if (loss != 0) {
+                        rel_le(mdr_scene_q31_energy(&q, q.en.last_cycle), er64.last_cycle, 0, TOL_EN_LOOP_Q31,
+                               "q31 scene cycle's dissipation");
+                        loopq = fmax(loopq, fabs(mdr_scene_q31_energy(&q, q.en.last_cycle) / er64.last_cycle - 1));
+                    } else {
+                        assert_true(q.en.last_cycle == 0);
+                    }
                 }
 #endif
             }
         }
     }
     printf("  scene cycle work at 3 to 1000 ticks: f64 %.2e, f32 %.2e of the gross work against the closed form, "
-           "q31 %.2e against f64 (tolerances %.0e, %.0e, %.0e)\n",
-           worst64, worst32, worstq, TOL_EN_TICK64, TOL_EN_TICK32, TOL_EN_TICK_Q31);
+           "q31 %.2e against f64 (tolerances %.0e, %.0e, %.0e); of the dissipation f64 %.2e, f32 %.2e, q31 "
+           "%.2e (tolerances %.0e, %.0e, %.0e); the work to each state of the retraction branch f64 %.2e, q31 %.2e "
+           "of the gross work\n",
+           worst64, worst32, worstq, TOL_EN_TICK64, TOL_EN_TICK32, TOL_EN_TICK_Q31, loop64, loop32, loopq,
+           TOL_EN_LOOP64, TOL_EN_LOOP32, TOL_EN_LOOP_Q31, work64, workq);
 }
 
 #if MDR_CFG_Q31

@@ -81,14 +81,32 @@ typedef struct {
  *  rounding of the states: on a moving edge the change of the elastic
  *  energy less the work of adhesion (seed 4.21), not a quadrature of F
  *  over d; a jump at constant control and a pinned stretch by the
- *  trapezoid, exact there. */
+ *  trapezoid, exact there.
+ *  What a cycle dissipates (last_cycle, dissipated) is not that sum of
+ *  work, whose terms carry the stored elastic energy there and back (a
+ *  hard sphere under a large load stores ~1e6 times what its cycle
+ *  dissipates, which the rounding of the states' work, ~eps times that,
+ *  swamped: 5 % in f32, a negative loop in f64 at E* = 1e35), but the sum
+ *  `loss` of what each part of the cycle dissipates where it arises: the
+ *  work less the change of the elastic energy E* int_0^a (d - g)^2 dx of
+ *  the springs in contact. That is 0 on a pinned edge, the work of
+ *  adhesion -w pi (a1^2 - a0^2) on a moving one (w_adv advancing, w
+ *  receding), and at a jump between the states (a0, d0) and (a1, d1)
+ *  -E* int_a0^a1 (d0 - g)(d1 - g) dx; over a whole cycle the elastic
+ *  energy returns to 0, so the two sums agree but for rounding, and the
+ *  loss is resolved to the arithmetic's rounding of the contact's size,
+ *  not of its stored energy. */
 typedef struct {
     double work;         /**< int F dd since the last complete separation [J] */
     double work_c;       /**< compensation term of that sum (Kahan) */
     double dissipated;   /**< energy dissipated over completed cycles [J] */
     double dissipated_c; /**< compensation term of that sum (Kahan) */
-    double last_cycle;   /**< energy dissipated in the last completed cycle [J] */
+    double last_cycle;   /**< energy dissipated in the last completed cycle [J]: `loss` at its end */
     uint32_t cycles;    /**< completed cycles (approach, then complete separation) */
+    double loss;         /**< energy dissipated since the last complete separation [J]: the work
+                             less the change of the stored elastic energy, summed where it
+                             arises (a moving edge: the work of adhesion; a jump) */
+    double loss_c;       /**< compensation term of that sum (Kahan) */
 } mdr_energy_f64;
 
 /** The pinned edge of an engine for one control mode (internal: what a tick
