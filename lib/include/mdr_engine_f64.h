@@ -103,9 +103,10 @@ typedef struct {
     double dissipated_c; /**< compensation term of that sum (Kahan) */
     double last_cycle;   /**< energy dissipated in the last completed cycle [J]: `loss` at its end */
     uint32_t cycles;    /**< completed cycles (approach, then complete separation) */
-    double loss;         /**< energy dissipated since the last complete separation [J]: the work
-                             less the change of the stored elastic energy, summed where it
-                             arises (a moving edge: the work of adhesion; a jump) */
+    double loss;         /**< the work since the last complete separation less the elastic
+                             energy stored now, E* int_0^a (d - g)^2 dx [J], summed where it
+                             arises (a moving edge: its work of adhesion; a jump): at a complete
+                             separation, what the cycle dissipated (last_cycle) */
     double loss_c;       /**< compensation term of that sum (Kahan) */
 } mdr_energy_f64;
 

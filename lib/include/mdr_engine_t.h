@@ -84,9 +84,10 @@ typedef struct {
     MDR_T dissipated_c; /**< compensation term of that sum (Kahan) */
     MDR_T last_cycle;   /**< energy dissipated in the last completed cycle [J]: `loss` at its end */
     uint32_t cycles;    /**< completed cycles (approach, then complete separation) */
-    MDR_T loss;         /**< energy dissipated since the last complete separation [J]: the work
-                             less the change of the stored elastic energy, summed where it
-                             arises (a moving edge: the work of adhesion; a jump) */
+    MDR_T loss;         /**< the work since the last complete separation less the elastic
+                             energy stored now, E* int_0^a (d - g)^2 dx [J], summed where it
+                             arises (a moving edge: its work of adhesion; a jump): at a complete
+                             separation, what the cycle dissipated (last_cycle) */
     MDR_T loss_c;       /**< compensation term of that sum (Kahan) */
 } MDR_SFX(mdr_energy);
 

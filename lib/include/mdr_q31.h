@@ -105,8 +105,9 @@ typedef struct {
     int64_t dissipated; /**< energy dissipated over completed cycles */
     int64_t last_cycle; /**< energy dissipated in the last completed cycle: `loss` at its end */
     uint32_t cycles;    /**< completed cycles (approach, then complete separation) */
-    int64_t loss;       /**< energy dissipated since the last complete separation (as
-                             mdr_energy_f32.loss) */
+    int64_t loss;       /**< the work since the last complete separation less the elastic
+                             energy stored now (as mdr_energy_f32.loss): at a complete
+                             separation, what the cycle dissipated (last_cycle) */
 } mdr_energy_q31;
 
 /** The pinned edge of the q31 engine for one control mode (internal; see
