@@ -130,6 +130,32 @@ __attribute__((unused)) static double jkr_cycle_loss(double E_, double R, double
            jkr_psi(E_, R, ain, din) + jkr_psi(E_, R, af, df);
 }
 
+/* The same for g = C x^n (the scenes' power laws; n = 2, C = 1/R: the
+ * paraboloid above), one cycle from the touch to a_max (*u_max: its
+ * control there) and back past the pull-off (*u_off: the pull-off's
+ * control). On a branch of dl = c sqrt(a): d = C a^n - c sqrt(a), F/(2E*) =
+ * a d - G = n/(n+1) C a^(n+1) - c a^(3/2). The jump-in at the touch lands
+ * where the control is 0 (grips: C a^(n-1/2) = c_adv; load: n/(n+1)
+ * C a^(n-1/2) = c_adv), from d = 0, losing E* int_0^a g (d_in - g); the
+ * retraction's fold (grips: 2n C a^(n-1/2) = c_w; load: n C a^(n-1/2) =
+ * 1.5 c_w) pulls off at d_f, losing Psi(a_f, d_f) = E* (a d^2 - 2 d C
+ * a^(n+1)/(n+1) + C^2 a^(2n+1)/(2n+1)); the branches their works of
+ * adhesion. Needs a_in, a_f < a_max. */
+__attribute__((unused)) static double mono_cycle_loss(double E_, double C, int n, double w, double wa, uint8_t ctl,
+                                                      double a_max, double *u_max, double *u_off)
+{
+    const double cw = sqrt(2 * M_PI * w / E_), ca = sqrt(2 * M_PI * wa / E_), e = 1.0 / (n - 0.5);
+    const double ain = pow(ctl == MDR_CONTROL_LOAD ? ca * (n + 1) / (n * C) : ca / C, e);
+    const double af = pow(ctl == MDR_CONTROL_LOAD ? 1.5 * cw / (n * C) : cw / (2 * n * C), e);
+    const double din = C * pow(ain, n) - ca * sqrt(ain), df = C * pow(af, n) - cw * sqrt(af);
+    const double dm = C * pow(a_max, n) - ca * sqrt(a_max);
+    const double lin = E_ * (din * C * pow(ain, n + 1) / (n + 1) - C * C * pow(ain, 2 * n + 1) / (2 * n + 1));
+    const double psif = E_ * (af * df * df - 2 * df * C * pow(af, n + 1) / (n + 1) + C * C * pow(af, 2 * n + 1) / (2 * n + 1));
+    *u_max = ctl == MDR_CONTROL_LOAD ? 2 * E_ * (a_max * dm - C * pow(a_max, n + 1) / (n + 1)) : dm;
+    *u_off = ctl == MDR_CONTROL_LOAD ? 2 * E_ * (af * df - C * pow(af, n + 1) / (n + 1)) : df;
+    return -wa * M_PI * (a_max * a_max - ain * ain) + w * M_PI * (a_max * a_max - af * af) + lin + psif;
+}
+
 /* The energy tests' JKR scenes (test_engine's energy_any_tick, test_scene's,
  * test_q31's): the JKR scene of CHECK_VALUES with w_adv = 0.4 w to 8 um;
  * helper-31's 1 mm sphere of stop 58, E* = 10 GPa, w_adv = 0.99 w, to 72 um

@@ -360,8 +360,10 @@ uint8_t mdr_engine_clear_flags_f64(mdr_engine_f64 *e);
  *        d only; MDR_OUT_RADIUS, MDR_OUT_EVENTS, MDR_OUT_ENERGY add a, the
  *        event fields and z, the energy sums). Fields not asked for are not
  *        written (out) resp. not updated (e->en); turning MDR_OUT_ENERGY
- *        back on restarts the sums from zero. A step costs less the less it
- *        is asked for (README, step cost).
+ *        back on restarts the sums from zero (in contact: the cycle's loss
+ *        then ends, at the next complete separation, with the elastic
+ *        energy stored at the restart counted as dissipated). A step costs
+ *        less the less it is asked for (README, step cost).
  * @return MDR_OK, MDR_E_NULL, MDR_E_PARAM (unknown bits)
  */
 mdr_status mdr_engine_outputs_f64(mdr_engine_f64 *e, uint8_t outputs);
