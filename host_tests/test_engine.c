@@ -898,12 +898,10 @@ static void energy_any_tick(void **st)
                     assert_int_equal(step64_of(ctl)(&e, u, &o), MDR_OK);
                     assert_int_equal(step32_of(ctl)(&f, (float)u, &o32), MDR_OK);
                     if (e.contact && e.a < pk64) {
-                        rel_le(e.en.work - e.en.work_c,
-                               jkr_work_to(sc[i].E, sc[i].R, sc[i].w, sc[i].wa, ctl, sc[i].a_max, e.a, &g2, &um, &uo),
-                               gross, TOL_EN_TICK64, "f64 work to a state");
-                        work64 = fmax(work64, fabs(e.en.work - e.en.work_c -
-                                                   jkr_work_to(sc[i].E, sc[i].R, sc[i].w, sc[i].wa, ctl,
-                                                               sc[i].a_max, e.a, &g2, &um, &uo)) / gross);
+                        const double wt =
+                            jkr_work_to(sc[i].E, sc[i].R, sc[i].w, sc[i].wa, ctl, sc[i].a_max, e.a, &g2, &um, &uo);
+                        rel_le(e.en.work - e.en.work_c, wt, gross, TOL_EN_TICK64, "f64 work to a state");
+                        work64 = fmax(work64, fabs(e.en.work - e.en.work_c - wt) / gross);
                     }
                     if (f.contact && f.a < pk32) {
                         rel_le(f.en.work - f.en.work_c,
@@ -1002,7 +1000,11 @@ static void energy_stiff_loop(void **st)
  * plain sum over 16 384 springs was 8.6e-5 off in f32 (helper-54). */
 static void energy_flat_punch_springs(void **st)
 {
+#ifdef MDR_TARGET_TEST /* (a table of MDR_SPRINGS_MAX springs in soft double: host only) */
+    static const uint16_t ns[3] = {16, 256, 1024};
+#else
     static const uint16_t ns[3] = {16, 1024, MDR_SPRINGS_MAX};
+#endif
     const double a0 = 1e-7, E = 1e9, w = 0.05, pd[3] = {a0, 0, 0}, want = 2 * M_PI * w * a0 * a0;
     const float pf[3] = {(float)a0, 0, 0};
     double worst64 = 0, worst32 = 0;
@@ -1030,8 +1032,8 @@ static void energy_flat_punch_springs(void **st)
         worst64 = fmax(worst64, fabs(e.en.last_cycle / want - 1));
         worst32 = fmax(worst32, fabs(f.en.last_cycle / want - 1));
     }
-    printf("  flat punch, 16 to %d springs: dissipation within f64 %.2e, f32 %.2e of 2 pi w a0^2\n",
-           MDR_SPRINGS_MAX, worst64, worst32);
+    printf("  flat punch, 16 to %d springs: dissipation within f64 %.2e, f32 %.2e of 2 pi w a0^2\n", (int)ns[2],
+           worst64, worst32);
 }
 
 /* A profile with jumps inside the contact (the wavy one, seed 4.54, 64
