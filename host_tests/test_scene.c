@@ -165,6 +165,20 @@ static mdr_status step_scene32(mdr_scene_f32 *s, int ctl, float u, mdr_step_f32 
                                       : mdr_scene_step_z_f32(s, u, o);
 }
 
+#if MDR_CFG_Q31
+/* One tick of a q31 scene under grips or load at the raw control nearest u
+ * (unit: its LSB in SI) and of the f64 scene it was made from at that same
+ * control (o: the f64 scene's output) */
+static void step_q31_pair(mdr_scene_f64 *r64, mdr_scene_q31 *q, int ctl, double u, double unit, mdr_step_f64 *o)
+{
+    const int32_t raw = (int32_t)lround(u / unit);
+    mdr_step_q31 oq;
+    assert_int_equal(step_scene64(r64, ctl, raw * unit, o), MDR_OK);
+    assert_int_equal(ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(q, raw, &oq) : mdr_scene_step_F_q31(q, raw, &oq),
+                     MDR_OK);
+}
+#endif
+
 static mdr_status step_eng64(mdr_engine_f64 *e, int ctl, double u, mdr_step_f64 *o)
 {
     return ctl == MDR_CONTROL_LOAD    ? mdr_engine_step_F_f64(e, u, o)
@@ -1170,14 +1184,10 @@ static void scene_energy_any_tick(void **state)
                     assert_int_equal(mdr_scene_init_q31_f64(&q, &r64, 1.01 * sc[i].a_max), MDR_OK);
                     unit = (ctl == MDR_CONTROL_GRIPS ? q.D0 : q.F0) / 536870912.0;
                     for (k = 1; k <= 2 * n; k++) {
-                        const double u = k <= n ? u_max * (double)k / (double)n
-                                                : u_max + (u_end - u_max) * (double)(k - n) / (double)n;
-                        const int32_t raw = (int32_t)lround(u / unit);
-                        mdr_step_q31 oq;
-                        assert_int_equal(step_scene64(&r64, ctl, raw * unit, &o), MDR_OK);
-                        assert_int_equal(ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, raw, &oq)
-                                                                  : mdr_scene_step_F_q31(&q, raw, &oq),
-                                         MDR_OK);
+                        step_q31_pair(&r64, &q, ctl,
+                                      k <= n ? u_max * (double)k / (double)n
+                                             : u_max + (u_end - u_max) * (double)(k - n) / (double)n,
+                                      unit, &o);
                         if (k == n) {
                             pk64 = o.a;
                         }
@@ -1284,14 +1294,10 @@ static void scene_energy_power_laws(void **state)
                     assert_int_equal(st, MDR_OK);
                     unit = (ctl == MDR_CONTROL_GRIPS ? q.D0 : q.F0) / 536870912.0;
                     for (kk = 1; kk <= 2 * n; kk++) {
-                        const double u = kk <= n ? u_max * (double)kk / (double)n
-                                                 : u_max + (1.5 * u_off - u_max) * (double)(kk - n) / (double)n;
-                        const int32_t raw = (int32_t)lround(u / unit);
-                        mdr_step_q31 oq;
-                        assert_int_equal(step_scene64(&r64, ctl, raw * unit, &o), MDR_OK);
-                        assert_int_equal(ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, raw, &oq)
-                                                                  : mdr_scene_step_F_q31(&q, raw, &oq),
-                                         MDR_OK);
+                        step_q31_pair(&r64, &q, ctl,
+                                      kk <= n ? u_max * (double)kk / (double)n
+                                              : u_max + (1.5 * u_off - u_max) * (double)(kk - n) / (double)n,
+                                      unit, &o);
                     }
                     assert_int_equal(q.en.cycles, 1);
                     assert_int_equal(er64.cycles, 1);
