@@ -62,7 +62,7 @@ SUITES = [
     ("test_vectors", ["host_tests/test_vectors.c"], [], ["-lcmocka", "-lm"], [], 60),
     ("test_critical", ["host_tests/test_critical.c"], [], ["-lcmocka", "-lm"], [], 60),
     ("test_fit", ["host_tests/test_fit.c"], [], ["-lcmocka", "-lm"], [], 120),
-    ("cli", ["examples/mdr_cli.c"], [], ["-lm"], [], 60),
+    ("cli", ["examples/mdr_cli.c"], [], ["-lm"], [], 180),
     ("fit_cli", ["examples/mdr_cli.c"], [], ["-lm", "-pthread"], [], 120),
     ("test_engine_ref", ["host_tests/test_engine_ref.c"], ["ref"], ["-lcmocka"] + GSL, [], 90),
     ("test_q31", ["host_tests/test_q31.c"], ["ref"], ["-lcmocka"] + GSL, [], 120),
