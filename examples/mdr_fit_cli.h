@@ -292,11 +292,32 @@ static int fit_num(const char *s, const char *e, double *v)
     return end == e;
 }
 
-/* Split the line at commas into at most 3 fields: their count; starts and
- * ends in f[][2]. */
+/* Split the line at commas into at most 3 fields: their count (4: more);
+ * starts and ends in f[][2]. A line without a comma is split at runs of
+ * tabs and spaces instead (a tab- or space-separated export, as a tip
+ * file is read: refused as one field before, helper-56). */
 static int fit_fields(char *s, char *f[3][2])
 {
     int n = 0;
+    if (strchr(s, ',') == NULL) {
+        for (;;) {
+            while (*s == ' ' || *s == '\t') {
+                s++;
+            }
+            if (*s == '\0') {
+                return n;
+            }
+            if (n == 3) {
+                return 4;
+            }
+            f[n][0] = s;
+            while (*s != '\0' && *s != ' ' && *s != '\t') {
+                s++;
+            }
+            f[n][1] = s;
+            n++;
+        }
+    }
     for (;;) {
         char *c = strchr(s, ',');
         if (n == 3) {
@@ -524,7 +545,7 @@ static int fit_curve_cmd(const struct fit_args *A)
             continue;
         }
         if (fit_fields(r.buf, f) != 2) {
-            rc = fit_bad_line(&r, "expected two fields z,F");
+            rc = fit_bad_line(&r, "expected two fields z,F (separated by a comma, tabs or spaces)");
         } else if (!header && !fit_num(f[0][0], f[0][1], &z) && fit_header_field(f[0][0], f[0][1])) {
             header = 1; /* the header line */
         } else {
@@ -570,6 +591,12 @@ static int fit_curve_cmd(const struct fit_args *A)
             json_str(&j, "hint", "with --unpinned: a line to the pull-off explains the retract better than a "
                                  "receding branch (a contact pinned until it ruptures, or a branch straight "
                                  "within the noise)");
+        } else if (c.res.st == MDR_E_PINNED && A->approach) {
+            /* the message's "fit with the approach" is done: what it found */
+            json_str(&j, "hint", "with --approach: the approach's w_adv is more than 6 errors below w (adhesion "
+                                 "hysteresis), so the straight retract may hide a pinned top, which the fit does "
+                                 "not model: a stiffer lever or less noise shows where the retract recedes "
+                                 "(docs/fitting.md)");
         }
         json_key(&j, "status_code");
         printf("%d", (int)c.res.st);
@@ -827,7 +854,7 @@ static long fit_read_chunk(fit_reader *r, fit_seen *seen, fit_pending *pd, fit_c
             continue;
         }
         if (fit_fields(r->buf, f) != 3) {
-            (void)fit_bad_line(r, "expected three fields curve,z,F");
+            (void)fit_bad_line(r, "expected three fields curve,z,F (separated by commas, tabs or spaces)");
             return fit_stop(bad, k);
         }
         if (!pd->header && !fit_num(f[1][0], f[1][1], &z) && fit_header_field(f[1][0], f[1][1])) {
@@ -1125,7 +1152,7 @@ static int fit_main(int argc, char **argv)
     struct fit_args A;
     const char *profile = NULL, *pname[3];
     double pval[3];
-    int i, k, np = 0, have_k = 0, have_E0 = 0, have_w0 = 0, pi = -1, used[3] = {0, 0, 0};
+    int i, k, np = 0, have_k = 0, have_E0 = 0, have_w0 = 0, have_jobs = 0, pi = -1, used[3] = {0, 0, 0};
     long ncpu;
     memset(&A, 0, sizeof A);
     A.f64 = 1;
@@ -1202,6 +1229,7 @@ static int fit_main(int argc, char **argv)
                 return usage_error("--jobs must be an integer in [1, 1024]", v);
             }
             A.jobs = (int)j;
+            have_jobs = 1;
         } else if (np < 3) {
             pname[np] = f; /* a profile parameter, checked below */
             pval[np++] = x;
@@ -1230,6 +1258,10 @@ static int fit_main(int argc, char **argv)
     }
     if (A.map && A.model != NULL) {
         return usage_error("--model goes with --curve", NULL);
+    }
+    if (!A.map && have_jobs) {
+        /* (a flag the command does not use is refused: helper-56) */
+        return usage_error("--jobs goes with --map", NULL);
     }
     if (profile == NULL) {
         return usage_error("missing --profile", NULL);

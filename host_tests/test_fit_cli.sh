@@ -300,6 +300,12 @@ for f in un pn; do
         else
             [ $rc -eq 1 ] && [ "$(key "$hout" status)" = '"MDR_E_PINNED"' ] && ok || bad "noisy straight retract ($f $opt) refused: $hout"
         fi
+        # with --approach the message's "fit with the approach" is done: the
+        # hint says what the approach found (helper-56: it read as if
+        # --approach had not been given)
+        if [ "$f$opt" = pn--approach ]; then
+            echo "$hout" | grep -q '"hint": "with --approach: the approach' && ok || bad "pinned, --approach: hint: $hout"
+        fi
     done
 done
 hout=$("$MDR" fit --curve "$TMP/un.csv" $TIP --k-machine 0.2 --unpinned) &&
@@ -470,6 +476,18 @@ near "$(printf '%s\n' "$res" | sed -n 3p | cut -d, -f3)" 0.08 1e-7 && ok || bad 
 [ "$(printf '%s\n' "$res" | sed -n 3p | cut -d, -f8)" = ok ] && ok || bad "map status column"
 res1=$("$MDR" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 --jobs 1)
 [ "$res" = "$res1" ] && ok || bad "--jobs 1 and --jobs 2 differ"
+# tab- and space-separated files (a TSV export) read as the CSV: the same
+# answers to the last digit (before: "expected two fields", helper-56)
+tr ',' '\t' < "$TMP/map.csv" > "$TMP/map.tsv"
+res1=$("$MDR" fit --map "$TMP/map.tsv" $TIP --k-machine 0.2 --jobs 1)
+[ "$res" = "$res1" ] && ok || bad "a tab-separated map differs: $res1"
+ccsv=$("$MDR" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2)
+for sep in '\t' ' ' '  \t '; do
+    awk -F, -v s="$(printf "$sep")" '{ print " " $1 s $2 }' "$TMP/c.csv" > "$TMP/c_ws.txt"
+    cws=$("$MDR" fit --curve "$TMP/c_ws.txt" $TIP --k-machine 0.2) && [ "$(key "$cws" E)" = "$(key "$ccsv" E)" ] &&
+        [ "$(key "$cws" w)" = "$(key "$ccsv" w)" ] && [ "$(key "$cws" E_err)" = "$(key "$ccsv" E_err)" ] &&
+        ok || bad "a curve separated by '$sep': $cws / $ccsv"
+done
 awk -F, 'NR > 1002 { printf "c3,%s,1e-12\n", $2 }' "$TMP/m1.csv" > "$TMP/flat.csv"
 cat "$TMP/map.csv" "$TMP/flat.csv" > "$TMP/map2.csv"
 res=$("$MDR" fit --map "$TMP/map2.csv" $TIP --k-machine 0.2)
@@ -499,6 +517,7 @@ expect2 "bad arith" "arith" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --arit
 expect2 "E0 alone" "E0" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --E0 1e9
 expect2 "unknown flag" "unknown" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --foo 3
 expect2 "bad jobs" "jobs" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 --jobs 0
+expect2 "--jobs with --curve" "jobs goes with --map" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --jobs 2
 expect2 "R < 0" "profile" fit --curve "$TMP/c.csv" --profile paraboloid --R -1 --k-machine 0.2
 expect2 "missing file" "cannot open" fit --curve "$TMP/none.csv" $TIP --k-machine 0.2
 expect2 "table without --file" "needs --file" fit --curve "$TMP/c.csv" --profile table --k-machine 0.2

@@ -182,7 +182,8 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
                                             dptr(F), n, work, len(work), res, fail)
     if st != lib.MDR_OK:
         raise _fit_error(st, z, F, fail[0] if fail[0] < n else None, method, arith,
-                         slope=method == "full" and not flat_baseline, unpinned=bool(unpinned))
+                         slope=method == "full" and not flat_baseline, unpinned=bool(unpinned),
+                         approach=bool(approach))
     out = {f: float(getattr(res, f)) for f in FIT_DOUBLES}
     if not res.n_approach:
         out["w_adv"] = out["w_adv_err"] = None
@@ -193,7 +194,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
                      _res=res)
 
 
-def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False):
+def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach=False):
     """mdr.Error of a refused fit, naming the sample where there is one."""
     where = "fit(%d samples, method=%r, arith=%r)" % (z.size, method, arith)
     if st == lib.MDR_E_NONFINITE and i is None:
@@ -223,4 +224,9 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False):
         hints[lib.MDR_E_PINNED] = ("with unpinned=True: a line to the pull-off explains the retract better than a "
                                    "receding branch (a contact pinned until it ruptures, or a branch straight "
                                    "within the noise)")
+    elif approach:
+        hints[lib.MDR_E_PINNED] = ("with approach=True: the approach's w_adv is more than 6 errors below w "
+                                   "(adhesion hysteresis), so the straight retract may hide a pinned top, which "
+                                   "the fit does not model: a stiffer lever or less noise shows where the "
+                                   "retract recedes (docs/fitting.md)")
     return Error(st, where, hint=hints.get(st, ""))
