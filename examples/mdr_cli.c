@@ -786,7 +786,8 @@ static const char *const usage_cmd[NCMD] = {
     "  fits E*, w (and the base offset z0, force baseline F_base and its slope\n"
     "  F_slope, held at 0 with --flat-baseline) to a measured\n"
     "  force curve z,F (CSV, --curve: JSON on stdout) or to every curve of a map\n"
-    "  (curve,z,F, --map: CSV on stdout). --arith: default f64. See docs/fitting.md.\n",
+    "  (curve,z,F, --map: CSV on stdout); tab- or space-separated files too. --jobs:\n"
+    "  a map's threads. --arith: default f64. See docs/fitting.md.\n",
 };
 
 /* --help anywhere, `mdr help [CMD]`, --version: 0, or -1 to go on */
@@ -1165,6 +1166,12 @@ static int parse_args(struct cli_args *A, const struct cli_kv *kv, int nkv)
         }
         if (A->path == NULL || !have_steps) {
             return usage_error("cycle needs --path V1,V2,... and --steps-per-segment S", NULL);
+        }
+        if (A->have_w_adv && A->w >= 0.0 && is_finite(A->w) && !(A->w_adv >= 0.0 && A->w_adv <= A->w)) {
+            /* (named, not the engine's "parameter out of range": helper-56) */
+            return usage_errf("--w-adv %.9g: outside [0, --w] = [0, %.9g] (the approach's work of adhesion is at "
+                              "most the retraction's)",
+                              A->w_adv, A->w);
         }
         break;
     case CMD_TABLE:

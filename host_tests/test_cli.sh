@@ -339,6 +339,9 @@ refuse 'unknown flag: --bogus' eq $P --a 1e-6 --bogus=3
 refuse '^mdr: --control: not a flag of mdr eq' eq $P --a 1e-6 --control load
 refuse '^mdr: --path: not a flag of mdr critical' critical $P --control load --path 0,1
 refuse '^mdr: --w-adv: not a flag of mdr eq' eq $P --a 1e-6 --w-adv 0.01
+# w_adv beyond [0, w] named (it was the engine's "parameter out of range": helper-56)
+refuse '^mdr: --w-adv 0.1: outside \[0, --w\] = \[0, 0.05\]' cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --w-adv 0.1
+refuse '^mdr: --w-adv -0.01: outside \[0, --w\]' cycle $P --control grips --path 0,1e-6 --steps-per-segment 10 --w-adv -0.01
 refuse '^mdr: --springs: not a flag of mdr eq' eq $P --a 1e-6 --springs 64
 refuse '^mdr: --summary: not a flag of mdr eq' eq $P --a 1e-6 --summary "$TMP/s.json"
 refuse '^mdr: --name: not a flag of mdr cycle' cycle $P --control grips --path 0,1e-7 --steps-per-segment 4 --name x
@@ -740,7 +743,7 @@ refuse '^mdr: q31 table: too few springs for the profile.s curvature .*raise --s
 # (the material is valid: the float engine takes it), not as a parameter
 P="--profile paraboloid --R 10e-6 --E 1e6 --w 0.05 --w-adv 0.05 --control load --path 0,1e-6 --steps-per-segment 10"
 refuse '^mdr: q31 engine \(--a-max, table to 0.005 m\): the pull-off force is below 1024 LSB' cycle $P --a-max 5e-3 --arith q31
-refuse '^mdr: engine \(--E, --w, --w-adv, --k-machine\)' cycle --profile paraboloid --R 10e-6 --E 1e6 --w 0.05 \
+refuse '^mdr: --w-adv 0.06: outside \[0, --w\]' cycle --profile paraboloid --R 10e-6 --E 1e6 --w 0.05 \
     --w-adv 0.06 --control load --path 0,1e-6 --steps-per-segment 10 --a-max 5e-3 --arith q31
 out=$("$MDR" cycle $P --a-max 5e-3 --arith f64 --summary "$TMP/s.json" 2>/dev/null) && grep -q '"event": "jump-in"' "$TMP/s.json" &&
     ok || bad "the same table in f64: a jump-in"
@@ -751,7 +754,7 @@ out=$("$MDR" cycle $P --a-max 5e-3 --arith f64 --summary "$TMP/s.json" 2>/dev/nu
 P="--profile paraboloid --R 1e-6 --E 1e35 --w 0.05 --control grips --path 0,1e-9,-1e-9 --steps-per-segment 5"
 refuse '^mdr: engine \(--springs, --a-max, table to 3.95285e-08 m\): the pull-off lies so deep inside the first of 1024 springs' \
     cycle $P
-refuse '^mdr: engine \(--E, --w, --w-adv, --k-machine\)' cycle $P --w-adv 0.06
+refuse '^mdr: --w-adv 0.06: outside \[0, --w\]' cycle $P --w-adv 0.06
 out=$("$MDR" cycle $P --arith f64 2>&1 >/dev/null) && [ "$(key "$out" pull_off_F)" = "-1.3089969389752541e-07" ] &&
     ok || bad "the same scene in f64: pull-off -(5/6) pi w R ($out)"
 # a table so small that its springs' curvature terms are subnormal (f32:
