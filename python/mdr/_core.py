@@ -74,10 +74,18 @@ def narrow(arith, where, **values):
     as the CLI refuses its flags. A bool
     is no number here (k_machine=True is a mistake, not 1 N/m), nor a string
     (R="10e-6" was read as a number, helper-22 at stop 54): TypeError."""
+    out = []
     for name, v in values.items():
-        if isinstance(v, (bool, np.bool_, str, bytes)):
+        # (nor None, an array, a list or a complex number: None raised
+        # float()'s own TypeError, np.array([1e6]) was taken as its element;
+        # helper-56)
+        if (isinstance(v, (bool, np.bool_, str, bytes, list, tuple, complex, np.complexfloating)) or v is None or
+                np.ndim(v) != 0):
             raise TypeError("%s: %s must be a number, not %r" % (where, name, v))
-    out = [float(v) for v in values.values()]
+        try:
+            out.append(float(v))
+        except (TypeError, ValueError):
+            raise TypeError("%s: %s must be a number, not %r" % (where, name, v)) from None
     if arith == "f32":
         for (name, _), v in zip(values.items(), out):
             if abs(v) > FLT_MAX and v - v == 0:

@@ -219,6 +219,14 @@ def test_engine_refusals():
         mdr.Contact("paraboloid", R="10e-6", E=1e6, w=0.05)
     with pytest.raises(TypeError, match="w must be a number"):
         mdr.Contact("cone", theta=0.3, E=1e6, w=b"0.05")
+    # None, a one-element array, a list, a complex number: named too (None
+    # raised float()'s own message, np.array([1e6]) was taken; helper-56)
+    for bad in (None, np.array([1e6]), [1e6], 1e6 + 0j, object()):
+        with pytest.raises(TypeError, match="E must be a number"):
+            mdr.Contact("paraboloid", R=10e-6, E=bad, w=0.05)
+    with pytest.raises(TypeError, match="k_machine must be a number"):
+        mdr.Engine(mdr.Contact("paraboloid", R=10e-6, E=1e6, w=0.05), springs=64, k_machine=np.array([0.2]))
+    assert mdr.Contact("paraboloid", R=10e-6, E=np.float32(1e6), w=np.array(0.05)).w == 0.05  # numpy scalars
 
 
 @pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
