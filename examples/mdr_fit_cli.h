@@ -46,7 +46,7 @@
  * n_pinned method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
  * A fit that fails prints {"status": ..., "message": ...} (and "hint" for
  * MDR_E_DEGENERATE of the full fit with the slope fitted, and for
- * MDR_E_PINNED with --unpinned) and exits 1.
+ * MDR_E_PINNED with --unpinned or --approach) and exits 1.
  * --map prints CSV curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope
  * (the last three appended at stop 40: the columns before keep their
  * places), one row per curve in the input's order (status "ok" or the
