@@ -518,6 +518,22 @@ static void fit_json_end(cli_json *j, const struct fit_args *A)
     json_units(j, &in, "m");
 }
 
+/* The span of z [m] beyond which a failed fit's hint asks for SI units:
+ * 1 cm, far beyond a piezo's or an indenter's travel, where a curve in nm
+ * spans tens to thousands */
+#define FIT_SPAN_SI 1e-2
+
+static double fit_span(const double *z, size_t n)
+{
+    double lo = 0.0, hi = 0.0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        lo = i == 0 || z[i] < lo ? z[i] : lo;
+        hi = i == 0 || z[i] > hi ? z[i] : hi;
+    }
+    return hi - lo;
+}
+
 static int fit_curve_cmd(const struct fit_args *A)
 {
     fit_reader r = {NULL, NULL, NULL, 0, 0, DBL_MAX, 0};
@@ -582,7 +598,14 @@ static int fit_curve_cmd(const struct fit_args *A)
     if (c.res.st != MDR_OK) {
         json_str(&j, "status", fit_status_name(c.res.st));
         json_str(&j, "message", mdr_status_str(c.res.st));
-        if (c.res.st == MDR_E_DEGENERATE && !A->flat && A->method == MDR_FIT_FULL) {
+        if (fit_span(c.z, c.n) > FIT_SPAN_SI) {
+            /* (nm or um taken for metres were refused with a diagnosis of
+             * the curve's shape: MDR_E_DEGENERATE, MDR_E_PINNED; helper-56) */
+            char h[160];
+            (void)snprintf(h, sizeof h, "z spans %.3g m: z and F must be in metres and newtons (SI), not nm, um "
+                                        "or nN", fit_span(c.z, c.n));
+            json_str(&j, "hint", h);
+        } else if (c.res.st == MDR_E_DEGENERATE && !A->flat && A->method == MDR_FIT_FULL) {
             /* the slope's price (docs/fitting.md): what the caller can do */
             json_str(&j, "hint", "the baseline's slope is fitted too: give the whole free path of both "
                                  "branches, or --flat-baseline where the slope is subtracted already");

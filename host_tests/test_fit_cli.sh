@@ -518,6 +518,14 @@ expect2 "E0 alone" "E0" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --E0 1e9
 expect2 "unknown flag" "unknown" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --foo 3
 expect2 "bad jobs" "jobs" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 --jobs 0
 expect2 "--jobs with --curve" "jobs goes with --map" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --jobs 2
+# a curve in nm (z alone, then z and F): the refusal's hint asks for SI units
+# (it was the slope's or the pinned top's, a diagnosis of the shape: helper-56)
+for fs in 1 1e9; do
+    awk -F, -v fs=$fs 'NR == 1 { print; next } { printf "%.17g,%.17g\n", $1 * 1e9, $2 * fs }' "$TMP/c.csv" > "$TMP/nm.csv"
+    nout=$("$MDR" fit --curve "$TMP/nm.csv" $TIP --k-machine 0.2)
+    [ $? -eq 1 ] && echo "$nout" | grep -q '"hint": "z spans [0-9.e+]* m: z and F must be in metres' &&
+        ok || bad "a curve in nm (F x $fs): the hint names the units: $nout"
+done
 expect2 "R < 0" "profile" fit --curve "$TMP/c.csv" --profile paraboloid --R -1 --k-machine 0.2
 expect2 "missing file" "cannot open" fit --curve "$TMP/none.csv" $TIP --k-machine 0.2
 expect2 "table without --file" "needs --file" fit --curve "$TMP/c.csv" --profile table --k-machine 0.2

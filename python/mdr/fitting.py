@@ -229,4 +229,10 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach
                                    "(adhesion hysteresis), so the straight retract may hide a pinned top, which "
                                    "the fit does not model: a stiffer lever or less noise shows where the "
                                    "retract recedes (docs/fitting.md)")
-    return Error(st, where, hint=hints.get(st, ""))
+    hint = hints.get(st, "")
+    span = float(np.max(z) - np.min(z)) if z.size else 0.0
+    if span > 1e-2:
+        # (nm taken for metres were refused with a diagnosis of the curve's
+        # shape; helper-56): 1 cm is beyond a piezo's or an indenter's travel
+        hint = "z spans %.3g m: z and F must be in metres and newtons (SI), not nm, um or nN" % span
+    return Error(st, where, hint=hint)

@@ -338,6 +338,17 @@ def test_refusals(curve, arith):
     raises("MDR_E_FEW", z[:0], F[:0], "paraboloid", **tip)
 
 
+def test_units_hint(curve):
+    """A curve in nm (z alone, then z and F) is refused with a hint asking
+    for SI units (it was the slope's or the pinned top's hint, a diagnosis of
+    the curve's shape: helper-56)."""
+    z, F = curve
+    for fs in (1.0, 1e9):
+        with pytest.raises(mdr.Error) as err:
+            mdr.fit(z * 1e9, F * fs, "paraboloid", R=20e-9, k_machine=0.2)
+        assert "must be in metres and newtons (SI)" in err.value.hint, str(err.value)
+
+
 def test_hidden_pinned_top(curve):
     """Through the 0.2 N/m lever with noise of 1 % of the pull-off force the
     whole retract is straight within its noise: a pinned top could hide in
