@@ -605,6 +605,19 @@ static int fit_curve_cmd(const struct fit_args *A)
             (void)snprintf(h, sizeof h, "z spans %.3g m: z and F must be in metres and newtons (SI), not nm, um "
                                         "or nN", fit_span(c.z, c.n));
             json_str(&j, "hint", h);
+        } else if ((c.res.st == MDR_E_NOCONTACT || c.res.st == MDR_E_NOPULLOFF || c.res.st == MDR_E_FEW) &&
+                   c.n > 0) {
+            /* where the retract begins: an outlier above the top moves it
+             * (helper-56: one row at z = 5e-6 m gave MDR_E_NOCONTACT) */
+            char h[200];
+            size_t i, top = 0;
+            for (i = 1; i < c.n; i++) {
+                top = c.z[i] >= c.z[top] ? i : top;
+            }
+            (void)snprintf(h, sizeof h, "the retract is the part from the largest z on: line %ld (z = %.9g m), "
+                                        "%lu rows",
+                           c.line[top], c.z[top], (unsigned long)(c.n - top));
+            json_str(&j, "hint", h);
         } else if (c.res.st == MDR_E_DEGENERATE && !A->flat && A->method == MDR_FIT_FULL) {
             /* the slope's price (docs/fitting.md): what the caller can do */
             json_str(&j, "hint", "the baseline's slope is fitted too: give the whole free path of both "

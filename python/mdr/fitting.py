@@ -230,6 +230,12 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach
                                    "the fit does not model: a stiffer lever or less noise shows where the "
                                    "retract recedes (docs/fitting.md)")
     hint = hints.get(st, "")
+    if st in (lib.MDR_E_NOCONTACT, lib.MDR_E_NOPULLOFF, lib.MDR_E_FEW) and z.size:
+        # where the retract begins: an outlier above the top moves it
+        # (helper-56: one sample at z = 5e-6 m gave MDR_E_NOCONTACT)
+        top = z.size - 1 - int(np.argmax(z[::-1]))
+        hint += "; the retract is the part from the largest z on: sample %d (z = %.9g m), %d samples" % (
+            top, z[top], z.size - top)
     span = float(np.max(z) - np.min(z)) if z.size else 0.0
     if span > 1e-2:
         # (nm taken for metres were refused with a diagnosis of the curve's

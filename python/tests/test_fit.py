@@ -349,6 +349,19 @@ def test_units_hint(curve):
         assert "must be in metres and newtons (SI)" in err.value.hint, str(err.value)
 
 
+def test_outlier_hint(curve):
+    """One outlier above the top inside the retract moves the retract's start
+    there: the refusal's hint names that sample (helper-56)."""
+    z, F = curve
+    z = z.copy()
+    i = int(np.argmax(z)) + (len(z) - int(np.argmax(z))) // 2
+    z[i] = 5e-6
+    with pytest.raises(mdr.Error) as err:
+        mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2)
+    assert "the retract is the part from the largest z on: sample %d (z = 5e-06 m)" % i in err.value.hint, \
+        str(err.value)
+
+
 def test_hidden_pinned_top(curve):
     """Through the 0.2 N/m lever with noise of 1 % of the pull-off force the
     whole retract is straight within its noise: a pinned top could hide in
