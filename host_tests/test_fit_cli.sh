@@ -520,9 +520,9 @@ expect2 "bad jobs" "jobs" fit --map "$TMP/map.csv" $TIP --k-machine 0.2 --jobs 0
 expect2 "--jobs with --curve" "jobs goes with --map" fit --curve "$TMP/c.csv" $TIP --k-machine 0.2 --jobs 2
 # one outlier above the top inside the retract moves the retract's start
 # there: the refusal's hint names that line (helper-56: MDR_E_NOCONTACT alone)
-awk 'NR == 3000 { print "5e-6,1e-10"; next } { print }' "$TMP/c.csv" > "$TMP/outl.csv"
+awk 'NR == 1500 { print "5e-6,1e-10"; next } { print }' "$TMP/c.csv" > "$TMP/outl.csv"
 nout=$("$MDR" fit --curve "$TMP/outl.csv" $TIP --k-machine 0.2)
-[ $? -eq 1 ] && echo "$nout" | grep -q '"hint": "the retract is the part from the largest z on: line 3000 (z = 5e-06 m)' &&
+[ $? -eq 1 ] && echo "$nout" | grep -q '"hint": "the retract is the part from the largest z on: line 1500 (z = 5e-06 m)' &&
     ok || bad "an outlier above the top: the hint names its line: $nout"
 # a curve in nm (z alone, then z and F): the refusal's hint asks for SI units
 # (it was the slope's or the pinned top's, a diagnosis of the shape: helper-56)
