@@ -52,7 +52,7 @@
  *  step, the last one is reported and mdr_step.jumps counts the jumps. */
 #define MDR_EV_NONE 0u       /**< quasi-static: edge pinned or moving smoothly */
 #define MDR_EV_CONTACT 1u    /**< first touch of this instance, without a jump (w_adv = 0) */
-#define MDR_EV_JUMP_IN 2u    /**< touch followed by a jump into contact (w_adv > 0) */
+#define MDR_EV_JUMP_IN 2u    /**< touch followed by a jump into contact (w_adv > 0; or a fold of a wavy profile in the touch's tick) */
 #define MDR_EV_JUMP 3u       /**< jump of the edge inside contact (wavy profile) */
 #define MDR_EV_PULL_OFF 4u   /**< jump to complete separation (an unstable end of the branch) */
 #define MDR_EV_RECONTACT 5u  /**< touch after a separation, without a jump */
