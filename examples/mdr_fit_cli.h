@@ -629,10 +629,11 @@ static int fit_curve_cmd(const struct fit_args *A)
                                  "within the noise)");
         } else if (c.res.st == MDR_E_PINNED && A->approach) {
             /* the message's "fit with the approach" is done: what it found */
-            json_str(&j, "hint", "with --approach: the approach's w_adv is more than 6 errors below w (adhesion "
-                                 "hysteresis), so the straight retract may hide a pinned top, which the fit does "
-                                 "not model: a stiffer lever or less noise shows where the retract recedes "
-                                 "(docs/fitting.md)");
+            json_str(&j, "hint", "with --approach: the approach did not rule a pinned top out (its w_adv more "
+                                 "than 6 errors below w, adhesion hysteresis, or its own E* more than 3 errors "
+                                 "from the retract's), or the contact is pinned until it ruptures; the fit does "
+                                 "not model a pinned top the noise hides: a stiffer lever or less noise shows "
+                                 "where the retract recedes (docs/fitting.md)");
         }
         json_key(&j, "status_code");
         printf("%d", (int)c.res.st);

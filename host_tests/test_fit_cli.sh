@@ -304,7 +304,7 @@ for f in un pn; do
         # hint says what the approach found (helper-56: it read as if
         # --approach had not been given)
         if [ "$f$opt" = pn--approach ]; then
-            echo "$hout" | grep -q '"hint": "with --approach: the approach' && ok || bad "pinned, --approach: hint: $hout"
+            echo "$hout" | grep -q '"hint": "with --approach: the approach did not rule a pinned top out' && ok || bad "pinned, --approach: hint: $hout"
         fi
     done
 done

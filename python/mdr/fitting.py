@@ -225,10 +225,11 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach
                                    "receding branch (a contact pinned until it ruptures, or a branch straight "
                                    "within the noise)")
     elif approach:
-        hints[lib.MDR_E_PINNED] = ("with approach=True: the approach's w_adv is more than 6 errors below w "
-                                   "(adhesion hysteresis), so the straight retract may hide a pinned top, which "
-                                   "the fit does not model: a stiffer lever or less noise shows where the "
-                                   "retract recedes (docs/fitting.md)")
+        hints[lib.MDR_E_PINNED] = ("with approach=True: the approach did not rule a pinned top out (its w_adv "
+                                   "more than 6 errors below w, adhesion hysteresis, or its own E* more than 3 "
+                                   "errors from the retract's), or the contact is pinned until it ruptures; the "
+                                   "fit does not model a pinned top the noise hides: a stiffer lever or less "
+                                   "noise shows where the retract recedes (docs/fitting.md)")
     hint = hints.get(st, "")
     if st in (lib.MDR_E_NOCONTACT, lib.MDR_E_NOPULLOFF, lib.MDR_E_FEW) and z.size:
         # where the retract begins: an outlier above the top moves it

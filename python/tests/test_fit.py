@@ -378,7 +378,7 @@ def test_hidden_pinned_top(curve):
             err = raises("MDR_E_PINNED", z, F, "paraboloid", R=20e-9, k_machine=0.2, approach=True)
             # the hint says what the approach found (helper-56: the message's
             # "fit with the approach" read as if it had not been given)
-            assert err.hint.startswith("with approach=True: the approach's w_adv"), err.hint
+            assert err.hint.startswith("with approach=True: the approach did not rule a pinned top out"), err.hint
             continue
         for kw in (dict(approach=True), dict(unpinned=True)):
             res = mdr.fit(z, F, "paraboloid", R=20e-9, k_machine=0.2, **kw)
