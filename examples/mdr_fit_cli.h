@@ -410,13 +410,20 @@ static void fit_curve_free(fit_curve *c)
 }
 
 /* The first line of the retract whose z increases (a bad file), or 0. */
-static long fit_order_line(const fit_curve *c)
+/* where the retract begins: the last row at the largest z (0 for no rows) */
+static size_t fit_top(const fit_curve *c)
 {
     size_t i, top = 0;
     for (i = 0; i < c->n; i++) {
         top = c->z[i] >= c->z[top] ? i : top;
     }
-    for (i = top + 1; i < c->n; i++) {
+    return top;
+}
+
+static long fit_order_line(const fit_curve *c)
+{
+    size_t i;
+    for (i = fit_top(c) + 1; i < c->n; i++) {
         if (c->z[i] > c->z[i - 1]) {
             return c->line[i];
         }
@@ -434,15 +441,13 @@ static int fit_write_model(const struct fit_args *A, const fit_curve *c)
 {
     mdr_contact_f64 tip;
     double *Fm = malloc(c->n * sizeof *Fm);
-    size_t i, top = 0;
+    const size_t top = fit_top(c);
+    size_t i;
     mdr_status st = fit_tip_f64(A, &tip);
     FILE *fp;
     int werr;
     if (Fm == NULL) {
         return usage_error("out of memory", NULL);
-    }
-    for (i = 0; i < c->n; i++) {
-        top = c->z[i] >= c->z[top] ? i : top;
     }
     if (st == MDR_OK) {
         st = mdr_contact_material_f64(&tip, c->res.E, A->approach ? c->res.w_adv : c->res.w);
@@ -598,22 +603,19 @@ static int fit_curve_cmd(const struct fit_args *A)
     if (c.res.st != MDR_OK) {
         json_str(&j, "status", fit_status_name(c.res.st));
         json_str(&j, "message", mdr_status_str(c.res.st));
-        if (fit_span(c.z, c.n) > FIT_SPAN_SI) {
+        const double span = fit_span(c.z, c.n);
+        char h[200];
+        if (span > FIT_SPAN_SI) {
             /* (nm or um taken for metres were refused with a diagnosis of
              * the curve's shape: MDR_E_DEGENERATE, MDR_E_PINNED; helper-56) */
-            char h[160];
             (void)snprintf(h, sizeof h, "z spans %.3g m: z and F must be in metres and newtons (SI), not nm, um "
-                                        "or nN", fit_span(c.z, c.n));
+                                        "or nN", span);
             json_str(&j, "hint", h);
         } else if ((c.res.st == MDR_E_NOCONTACT || c.res.st == MDR_E_NOPULLOFF || c.res.st == MDR_E_FEW) &&
                    c.n > 0) {
             /* where the retract begins: an outlier above the top moves it
              * (helper-56: one row at z = 5e-6 m gave MDR_E_NOCONTACT) */
-            char h[200];
-            size_t i, top = 0;
-            for (i = 1; i < c.n; i++) {
-                top = c.z[i] >= c.z[top] ? i : top;
-            }
+            const size_t top = fit_top(&c);
             (void)snprintf(h, sizeof h, "the retract is the part from the largest z on: line %ld (z = %.9g m), "
                                         "%lu rows",
                            c.line[top], c.z[top], (unsigned long)(c.n - top));

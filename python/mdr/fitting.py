@@ -200,8 +200,8 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach
     if st == lib.MDR_E_NONFINITE and i is None:
         bad = np.flatnonzero(~(np.isfinite(z) & np.isfinite(F)))
         i = int(bad[0]) if bad.size else None
+    top = z.size - 1 - int(np.argmax(z[::-1])) if z.size else 0  # the retract's start: the last largest z
     if st == lib.MDR_E_ORDER and i is None:
-        top = z.size - 1 - int(np.argmax(z[::-1]))
         up = np.flatnonzero(np.diff(z[top:]) > 0)
         i = top + 1 + int(up[0]) if up.size else None
     if i is not None:
@@ -234,7 +234,6 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach
     if st in (lib.MDR_E_NOCONTACT, lib.MDR_E_NOPULLOFF, lib.MDR_E_FEW) and z.size:
         # where the retract begins: an outlier above the top moves it
         # (helper-56: one sample at z = 5e-6 m gave MDR_E_NOCONTACT)
-        top = z.size - 1 - int(np.argmax(z[::-1]))
         hint += "; the retract is the part from the largest z on: sample %d (z = %.9g m), %d samples" % (
             top, z[top], z.size - top)
     span = float(np.max(z) - np.min(z)) if z.size else 0.0
