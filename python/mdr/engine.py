@@ -308,7 +308,8 @@ class Engine:
             raise Error(st, "Engine.run: tick %d (%s = %.9g)" % (t0, {"grips": "d", "load": "F"}.get(control, "z"), v),
                         index=t0, value=v, partial=result,
                         hint="raise a_max (now %.9g m)" % self.a_max if st == lib.MDR_E_OUTSIDE else
-                        _SATURATED % self.q31_units if st == lib.MDR_E_OVERFLOW and self.arith == "q31" else "")
+                        _saturated(self.q31_units, control) if st == lib.MDR_E_OVERFLOW and self.arith == "q31"
+                        else "")
         return result
 
     def __repr__(self):
@@ -318,8 +319,16 @@ class Engine:
             self.w_adv, self.k_machine)
 
 
-_SATURATED = ("a q31 output saturated: beyond 2 units of %(D0).3g m (d), %(F0).3g N (F), %(Z0).3g m (z); "
-              "a separated machine's d follows z: end the path nearer the surface, or use f64")
+def _saturated(units, control):
+    """The hint of a q31 run's MDR_E_OVERFLOW: an output beyond 2 units, or
+    the energy sums (Q15.48 of F0 D0) full after very many cycles; the
+    machine's separated d only through a machine (helper-60: a grips run
+    whose energy sum filled was told about z)."""
+    out = ("d beyond 2 units of %(D0).3g m or F beyond 2 units of %(F0).3g N" % units if control != "machine" else
+           "d, F or z beyond 2 units of %(D0).3g m, %(F0).3g N, %(Z0).3g m (a separated machine's d follows z: "
+           "end the path nearer the surface)" % units)
+    return ("a q31 value saturated: %s, or the energy sums full (Q15.48 of F0 D0, after very many cycles: "
+            "reset() empties them); or use f64" % out)
 
 
 def _path_value(path, steps, t):

@@ -161,6 +161,7 @@ def test_tip_equals_cli(cli, tmp_path, control, arith):
         with pytest.raises(mdr.Error) as err:
             eng.run(path, control=control, steps_per_segment=900)
         assert err.value.status == "MDR_E_OVERFLOW" and err.value.partial.pull_off is not None
+        assert "a separated machine's d follows z" in err.value.hint, err.value.hint
         # the same tip and engine to -110 nm: every tick as the CLI's
         path = [-2e-9, 2e-9, -110e-9]
         args[args.index("--path") + 1] = ",".join(map(fmt, path))
@@ -445,3 +446,16 @@ def test_q31_vertex_below_half_lsb_refused():
     assert len(run.F) == 9
     f64 = mdr.Engine(c, w_adv=0.05, arith="f64").run([0, 2e-12, -1e-3], control="load", steps_per_segment=10)
     assert f64.events  # the cycle the q31 path lost
+
+
+def test_q31_saturation_hint():
+    # a q31 run's MDR_E_OVERFLOW under grips or load cannot be a machine's
+    # separated d: its hint names d, F and the energy sums (which fill after
+    # ~1.7e7 grips cycles on 2 springs: helper-60), not z; through a machine z too
+    from mdr.engine import _saturated
+    units = {"L": 3e-7, "D0": 2.4e-7, "F0": 1.4e-6, "Z0": 2.4e-7}
+    for control in ("grips", "load"):
+        h = _saturated(units, control)
+        assert "energy sums" in h and "reset()" in h and " z " not in h and "follows z" not in h, h
+    h = _saturated(units, "machine")
+    assert "energy sums" in h and "follows z" in h and "2.4e-07 m" in h, h
