@@ -57,6 +57,15 @@
  *     chain's values, and a product's rescaling to 32 bits (mdr_q_rs32)
  *     exactly its low word (a change of a value would change the
  *     fingerprint);
+ *   the Newton step's quotient (newton_quotient): the division's estimate
+ *     of 2^62/d (mdr_q_recip0) within TOL_RCP0 = 2^-15 of it relative, for
+ *     d at every multiple of 2^15 in [2^31, 2^32), its ends and 2^16
+ *     pseudo-random d; a step f 2^30/U' through mdr_m_du_of_q31 and
+ *     mdr_m_step_du_q31 within TOL_STEP = 3/4 LSB of t of the exact
+ *     quotient where it is below 2^13 LSB (1/2 its rounding, 1/4 the
+ *     estimate's 2^-15 of 2^13), the limit every convergence test of the
+ *     q31 solvers asks first; mdr_q_rcp's quotients (mdr_q_div) within
+ *     2^-28 relative + 1/2;
  *   a shallow approach (shallow_approach; helper-21, stop 54): the radius
  *     the approach reaches (w_adv = 0: g(a_m) = d) is resolved to the
  *     rounding of g there, SHALLOW_GTOL = 4 LSB of Q2.29 (MDR_Q_UTOL, the
@@ -1143,6 +1152,72 @@ static void rounding_shifts_32(void **st)
     assert_true(n == (15 + 64 + 65536) * 63L);
 }
 
+/* newton_quotient (tolerances: the top of this file) */
+#define TOL_RCP0 (1.0 / 32768.0)
+#define TOL_STEP 0.75
+static void newton_quotient(void **st)
+{
+    uint32_t x = 2463534242u, y = 88675123u; /* xorshift32 */
+    double worst_r = 0, worst_s = 0, worst_d = 0;
+    long i, n_s = 0;
+    (void)st;
+    for (i = 0; i < 65536 + 2 + 65536; i++) {
+        uint32_t d;
+        double r, ex;
+        if (i < 65536) {
+            d = 0x80000000u + (uint32_t)i * 32768u;
+        } else if (i < 65538) {
+            d = i == 65536 ? 0x80000000u : 0xFFFFFFFFu;
+        } else {
+            x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+            d = x | 0x80000000u;
+        }
+        r = (double)mdr_q_recip0(d);
+        ex = ldexp(1.0, 62) / (double)d;
+        if (fabs(r / ex - 1.0) > worst_r) {
+            worst_r = fabs(r / ex - 1.0);
+        }
+        assert_true(r > ldexp(1.0, 30) && r < ldexp(1.0, 31));
+    }
+    for (i = 0; i < 200000; i++) {
+        /* U' of every magnitude 1 .. 2^62, f of every magnitude below it
+         * times 2^-17 .. 2^2 (steps from below an LSB to past 2^13) */
+        int64_t dU, f, stp;
+        double q;
+        x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+        y ^= y << 13, y ^= y >> 17, y ^= y << 5;
+        dU = (int64_t)(((uint64_t)x << 32 | y) >> (1u + x % 62u));
+        dU = dU > 0 ? dU : 1;
+        x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+        f = (int64_t)(ldexp((double)(x >> 8) / 16777216.0, -(int)(y % 20u) + 2) * (double)dU);
+        f = (y & 1u) ? -f : f;
+        q = ldexp((double)f, 30) / (double)dU;
+        stp = mdr_m_step_du_q31(f, mdr_m_du_of_q31(dU));
+        if (fabs(q) < 8192.0) {
+            n_s++;
+            if (fabs((double)stp - q) > worst_s) {
+                worst_s = fabs((double)stp - q);
+            }
+        }
+        /* mdr_q_div (the fine reciprocal) on the same pair */
+        if (fabs(q) < ldexp(1.0, 61)) {
+            const double qd = (double)mdr_q_div(f, dU, 30);
+            const double e = fabs(qd - q) - 0.5;
+            if (e > 0 && e / fabs(q) > worst_d) {
+                worst_d = e / fabs(q);
+            }
+        }
+    }
+    print_message("  Newton quotient: estimate of 2^62/d within %.3g relative (tolerance %.3g); step below 2^13 "
+                  "LSB within %.3f LSB (tolerance %.2f, %ld steps); mdr_q_div %.3g relative beyond 1/2 (tolerance "
+                  "%.3g)\n",
+                  worst_r, TOL_RCP0, worst_s, TOL_STEP, n_s, worst_d, ldexp(1.0, -28));
+    assert_true(worst_r <= TOL_RCP0);
+    assert_true(n_s > 20000);
+    assert_true(worst_s <= TOL_STEP);
+    assert_true(worst_d <= ldexp(1.0, -28));
+}
+
 /* The first equilibrium on the way on coarse tables (test_engine's
  * first_equilibrium_coarse_tables, whose oracle this is: first_eq.h), for
  * the q31 engine on q31 tables of 2, 4 and 8 springs made from the f64
@@ -1272,6 +1347,7 @@ int main(void)
         cmocka_unit_test(coarse_tables_first_eq),
         cmocka_unit_test(rim_pull_off_lsb),
         cmocka_unit_test(rounding_shifts_32),
+        cmocka_unit_test(newton_quotient),
 #endif
     };
     return MDR_RUN_TESTS(tests);
