@@ -24,7 +24,7 @@
  *     LSB of F relative to max|F|; in LSB of the force format (2^-29 F0),
  *     the residual of the q31 state against the f64 table's own interpolant
  *     (so the table's discretisation drops out) and |F_po,q31 - F_po,f64|,
- *     at most TOL_LSB = 8 (measured 1.9 and 0.8): t is held to one ulp of
+ *     at most TOL_LSB = 8 (measured 1.9 and 1.5): t is held to one ulp of
  *     Q1.30, worth |dD/dt| 2^-30 of D0 with |dD/dt| = |2 t g' - c| <= 2*8 + 1,
  *     plus a few roundings; a depth error reaches the force through 2E* a <=
  *     F0/D0;
