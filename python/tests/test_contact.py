@@ -360,3 +360,39 @@ def test_f32_follows_f64(profile, params):
     for k in ("d", "F", "dl", "K_I"):
         v = getattr(e32, k)
         assert np.all(np.isfinite(v)) and within(curve_err(v, getattr(e64, k)), F32_F64), k
+
+
+# ---- the flattened tip (4.80-4.83) where its unstable window is narrow ----
+
+def flattip_least_d(R, b, E, w, a_top):
+    """The least depth of 4.82 over (0, a_top]: a log grid, then golden
+    section around its least point (the rim, a kink, taken as it is)."""
+    def d(a):
+        return a / R * math.sqrt(max((a - b) * (a + b), 0.0)) - math.sqrt(2 * math.pi * a * w / E)
+    grid = np.geomspace(1e-6 * b, a_top, 4001)
+    vals = [d(a) for a in grid]
+    i = int(np.argmin(vals))
+    lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
+    g = (math.sqrt(5) - 1) / 2
+    x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
+    for _ in range(200):
+        if d(x1) < d(x2):
+            hi, x2 = x2, x1
+            x1 = hi - g * (hi - lo)
+        else:
+            lo, x1 = x1, x2
+            x2 = lo + g * (hi - lo)
+    return min(vals[i], d(x1), d(x2), d(b))
+
+
+@pytest.mark.parametrize("ratio", [0.2, 0.2457, 0.2475, 0.2499, 0.26, 0.5])
+def test_flattip_pull_off_narrow_window(ratio):
+    # b/a* in [0.2457, 0.2499]: the library answered the rim under grips
+    # (d 8.7 % off; helper-59, stop 67): the pull-off depth is the least
+    # depth of the closed form over (0, a_start]
+    E, w, R = 1e6, 0.05, 1e-5
+    astar = (9 * math.pi * R * R * w / (8 * E)) ** (1 / 3)
+    c = mdr.Contact("flattip", E=E, w=w, R=R, b=ratio * astar)
+    s = c.critical("grips")
+    want = flattip_least_d(R, ratio * astar, E, w, c.default_start())
+    assert within(rel(s.d, want), REL64), (ratio, s.a, s.d, want)
