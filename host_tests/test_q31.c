@@ -1181,7 +1181,7 @@ static void newton_quotient(void **st)
     }
     for (i = 0; i < 200000; i++) {
         /* U' of every magnitude 1 .. 2^62, f of every magnitude below it
-         * times 2^-17 .. 2^2 (steps from below an LSB to past 2^13) */
+         * times 2^-19 .. 1, so below 2^62 (steps from below an LSB to past 2^13) */
         int64_t dU, f, stp;
         double q;
         x ^= x << 13, x ^= x >> 17, x ^= x << 5;
@@ -1189,7 +1189,7 @@ static void newton_quotient(void **st)
         dU = (int64_t)(((uint64_t)x << 32 | y) >> (1u + x % 62u));
         dU = dU > 0 ? dU : 1;
         x ^= x << 13, x ^= x >> 17, x ^= x << 5;
-        f = (int64_t)(ldexp((double)(x >> 8) / 16777216.0, -(int)(y % 20u) + 2) * (double)dU);
+        f = (int64_t)(ldexp((double)(x >> 8) / 16777216.0, -(int)(y % 20u)) * (double)dU);
         f = (y & 1u) ? -f : f;
         q = ldexp((double)f, 30) / (double)dU;
         stp = mdr_m_step_du_q31(f, mdr_m_du_of_q31(dU));
