@@ -249,8 +249,37 @@ static void flattip_structure(void **st)
  * machines, its bracket's steps down having passed over the window
  * (d 8.7 % off). */
 #define FT_WIN 1e-9
-static long double ft_ctl(long double a, long double R, long double b, long double E, long double w, long double km)
+
+/* Golden-section search for a minimum of f on [lo, hi], iters steps: the
+ * least value it evaluated, at *xm (this file's brute-force references) */
+typedef long double (*golden_fn)(long double x, const void *ctx);
+static long double golden_min(golden_fn f, const void *ctx, long double lo, long double hi, int iters, long double *xm)
 {
+    const long double gr = 0.6180339887498948482L;
+    long double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), f1 = f(x1, ctx), f2 = f(x2, ctx);
+    for (int it = 0; it < iters; it++) {
+        if (f1 < f2) {
+            hi = x2, x2 = x1, f2 = f1, x1 = hi - gr * (hi - lo);
+            f1 = f(x1, ctx);
+        } else {
+            lo = x1, x1 = x2, f1 = f2, x2 = lo + gr * (hi - lo);
+            f2 = f(x2, ctx);
+        }
+    }
+    *xm = f1 < f2 ? x1 : x2;
+    return fminl(f1, f2);
+}
+
+/* the flattened tip's control (4.82, 4.83: d under grips, d + F/km through a
+ * machine) at radius a */
+typedef struct {
+    long double R, b, E, w, km;
+} ft_par;
+
+static long double ft_ctl(long double a, const void *ctx)
+{
+    const ft_par *q = ctx;
+    const long double R = q->R, b = q->b, E = q->E, w = q->w, km = q->km;
     const long double s2 = a > b ? (a - b) * (a + b) : 0;
     const long double d = a / R * sqrtl(s2) - sqrtl(2 * M_PI * a * w / E);
     const long double F = 2 * E / (3 * R) * (2 * a * a + b * b) * sqrtl(s2) - sqrtl(8 * M_PI * a * a * a * E * w);
@@ -274,35 +303,21 @@ static void flattip_narrow_window(void **st)
             assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
             for (size_t ki = 0; ki < sizeof kap / sizeof kap[0]; ki++) {
                 const long double km = kap[ki] * 2 * E * astar;
+                const ft_par q = {R, b, E, w, km};
                 mdr_critstate_f64 o;
-                long double best = 1e300L, abest = 0, lo, hi, x1, x2, f1, f2, ref, got;
+                long double best = 1e300L, abest = 0, xm, ref, got;
                 const int m = 4000;
                 const long double r = powl((long double)a0 / (1e-6L * b), 1.0L / m);
                 long double a = (long double)b * 1e-6L;
                 for (int j = 0; j <= m; j++, a *= r) { /* log grid over (1e-6 b, a_start] */
-                    const long double v = ft_ctl(a, R, b, E, w, km);
+                    const long double v = ft_ctl(a, &q);
                     if (v < best) {
                         best = v;
                         abest = a;
                     }
                 }
-                lo = abest / r;
-                hi = abest * r;
-                x1 = hi - 0.6180339887498948482L * (hi - lo);
-                x2 = lo + 0.6180339887498948482L * (hi - lo);
-                f1 = ft_ctl(x1, R, b, E, w, km);
-                f2 = ft_ctl(x2, R, b, E, w, km);
-                for (int it = 0; it < 200; it++) {
-                    if (f1 < f2) {
-                        hi = x2, x2 = x1, f2 = f1, x1 = hi - 0.6180339887498948482L * (hi - lo);
-                        f1 = ft_ctl(x1, R, b, E, w, km);
-                    } else {
-                        lo = x1, x1 = x2, f1 = f2, x2 = lo + 0.6180339887498948482L * (hi - lo);
-                        f2 = ft_ctl(x2, R, b, E, w, km);
-                    }
-                }
-                ref = fminl(best, fminl(f1, f2));
-                ref = fminl(ref, ft_ctl(b, R, b, E, w, km)); /* (the rim: a kink) */
+                ref = fminl(best, golden_min(ft_ctl, &q, abest / r, abest * r, 200, &xm));
+                ref = fminl(ref, ft_ctl(b, &q)); /* (the rim: a kink) */
                 assert_int_equal(mdr_critical_f64(&c, kap[ki] > 0 ? MDR_CONTROL_MACHINE : MDR_CONTROL_GRIPS,
                                                   (double)km, a0, &o),
                                  MDR_OK);
@@ -494,55 +509,48 @@ static void most_tensile_force(void **st)
  * (mdr_eq), from the library's start down; an unstable start first moves up
  * to where c regains its value; local minima refined by golden section;
  * the lowest, and the records before it. */
+/* brute_n's control at radius a (mdr_eq) */
+typedef struct {
+    const mdr_contact_f64 *c;
+    uint8_t ctl;
+    double km;
+} eq_par;
+
+static long double eq_ctl(long double a, const void *ctx)
+{
+    const eq_par *q = ctx;
+    mdr_eqstate_f64 e;
+    assert_int_equal(mdr_eq_f64(q->c, (double)a, &e), MDR_OK);
+    return q->ctl == MDR_CONTROL_LOAD ? e.F : q->ctl == MDR_CONTROL_GRIPS ? e.d : e.d + e.F / q->km;
+}
+
 static void brute_n(const mdr_contact_f64 *c, uint8_t ctl, double km, double as, double lam, double per,
                     double *amin, int *jumps)
 {
-    mdr_eqstate_f64 e;
+    const eq_par q = {c, ctl, km};
     double best = INFINITY, v0, vprev = NAN, vpp = NAN, aprev = 0, ab = 0, h = lam / per;
     int nrec = 0;
-#define CTL(e) (ctl == MDR_CONTROL_LOAD ? (e).F : ctl == MDR_CONTROL_GRIPS ? (e).d : (e).d + (e).F / km)
-    assert_int_equal(mdr_eq_f64(c, as, &e), MDR_OK);
-    v0 = CTL(e);
+    v0 = (double)eq_ctl(as, &q);
     {
         /* jump in: the first a above with c >= c(start) */
         double a = as, v;
         do {
             a += h;
-            assert_int_equal(mdr_eq_f64(c, a, &e), MDR_OK);
-            v = CTL(e);
+            v = (double)eq_ctl(a, &q);
         } while (v < v0 && a < 2 * as);
         if (a - h > as) {
             as = a;
         }
     }
     for (double a = as; a > 0.05 * lam; a -= (a > 2 * lam ? h : a / 512)) {
-        double v;
-        assert_int_equal(mdr_eq_f64(c, a, &e), MDR_OK);
-        v = CTL(e);
+        const double v = (double)eq_ctl(a, &q);
         if (!isnan(vpp) && vprev < vpp && vprev <= v) {
             /* a local minimum near aprev: golden section on [a, aprev + step] */
-            double lo = a, hi = aprev + (aprev - a), x1, x2, f1, f2;
-            const double gr = 0.6180339887498949;
-            x1 = hi - gr * (hi - lo);
-            x2 = lo + gr * (hi - lo);
-            assert_int_equal(mdr_eq_f64(c, x1, &e), MDR_OK);
-            f1 = CTL(e);
-            assert_int_equal(mdr_eq_f64(c, x2, &e), MDR_OK);
-            f2 = CTL(e);
-            for (int it = 0; it < 80; it++) {
-                if (f1 < f2) {
-                    hi = x2, x2 = x1, f2 = f1, x1 = hi - gr * (hi - lo);
-                    assert_int_equal(mdr_eq_f64(c, x1, &e), MDR_OK);
-                    f1 = CTL(e);
-                } else {
-                    lo = x1, x1 = x2, f1 = f2, x2 = lo + gr * (hi - lo);
-                    assert_int_equal(mdr_eq_f64(c, x2, &e), MDR_OK);
-                    f2 = CTL(e);
-                }
-            }
-            if (fmin(f1, f2) < best) {
-                best = fmin(f1, f2);
-                ab = f1 < f2 ? x1 : x2;
+            long double xm;
+            const double fm = (double)golden_min(eq_ctl, &q, a, aprev + (aprev - a), 80, &xm);
+            if (fm < best) {
+                best = fm;
+                ab = (double)xm;
                 nrec++;
             }
         }
@@ -550,7 +558,6 @@ static void brute_n(const mdr_contact_f64 *c, uint8_t ctl, double km, double as,
         vprev = v;
         aprev = a;
     }
-#undef CTL
     *amin = ab;
     *jumps = nrec - 1;
 }
