@@ -682,11 +682,13 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
             cli_json j;
             CLI_T d = e.d, F = e.F, K = e.K_I, G = e.G;
             if (A->have_d) {
-                /* the state (a, d) as given: F = F_eq + 2 E* a (d - d_eq) (F is
-                 * linear in d at fixed a), K_I and G_rel of that state (4.17, 4.14) */
+                /* the state (a, d) as given: F (mdr_host_state_F), K_I and
+                 * G_rel of that state (4.17, 4.14) */
                 d = (CLI_T)A->d;
-                F = e.F + (CLI_T)2 * c.E * e.a * (d - e.d);
-                st = CLI_SFX(mdr_stress_intensity)(&c, e.a, d, &K, &G);
+                st = CLI_SFX(mdr_host_state_F)(&c, &e, d, &F);
+                if (st == MDR_OK) {
+                    st = CLI_SFX(mdr_stress_intensity)(&c, e.a, d, &K, &G);
+                }
                 if (st == MDR_OK && !(F - F == (CLI_T)0)) {
                     st = MDR_E_OVERFLOW; /* (printed "F": inf, exit 0; helper-37, stop 59) */
                 }

@@ -20,6 +20,23 @@ static inline HOST_T HOST_SFX(mdr_host_control_of)(uint8_t control, double k_m,
     return e->d + e->F / (HOST_T)k_m;
 }
 
+/** The force of the state (e->a, d), e the equilibrium state at that
+ *  radius: mdr_host_state_F() with G(a) from the profile (into *F). */
+static inline mdr_status HOST_SFX(mdr_host_state_F)(const HOST_SFX(mdr_contact) *c, const HOST_SFX(mdr_eqstate) *e,
+                                                    HOST_T d, HOST_T *F)
+{
+    HOST_T G;
+    const mdr_status st = HOST_SFX(mdr_profile_eval)(c, e->a, NULL, NULL, &G);
+    if (st == MDR_OK) {
+        const double v = mdr_host_state_F((double)c->E, (double)e->a, (double)d, (double)G, (double)e->F, (double)e->d,
+                                          HOST_SFX(mdr_host_tmin)());
+        /* (beyond the arithmetic's range: infinite, which the callers
+         * refuse; the conversion itself would be undefined) */
+        *F = (HOST_T)(!(fabs(v) <= HOST_SFX(mdr_host_tmax)()) ? v * HUGE_VAL : v);
+    }
+    return st;
+}
+
 /** The controlled variable on the equilibrium curve at radius a (into *v). */
 static inline mdr_status HOST_SFX(mdr_host_control_at)(const HOST_SFX(mdr_contact) *c, uint8_t control,
                                                        double k_m, HOST_T a, HOST_T *v)

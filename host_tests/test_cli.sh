@@ -810,6 +810,14 @@ out=$("$MDR" cycle $P --w 1e-8 --springs 90 --arith f64 2>&1 >/dev/null) && awk 
 # --header the same file wrote a .c that included itself
 refuse '^mdr: --a/--d: result beyond' eq --profile paraboloid --R 1e6 --E 1e30 --w 0.05 --a 1e3 --d 1e6
 refuse '^mdr: --a/--d: result beyond' eq --profile paraboloid --R 1e200 --E 1e200 --w 0.05 --a 1e100 --d 1e10 --arith f64
+# helper-62 (stop 68): the force of a state (a, d) given both, as F_eq + 2 E* a
+# (d - d_eq), lost its digits to the adhesion's terms (6.3 % off in f32 here;
+# 2E* (a d - G(a)) now: -2E* a^3/(3R) at d = 0, a as the arithmetic holds it)
+for arith in f32 f64; do
+    tol=$([ $arith = f32 ] && echo 2e-6 || echo 3e-14)
+    j=$($MDR eq --profile paraboloid --R 10e-6 --E 1e6 --w 0.05 --a 1e-9 --d 0 --arith $arith)
+    jcheck "$j" "abs(j['F'] / (-2e6 * j['a'] ** 3 / 3e-5) - 1) <= $tol"
+done
 refuse '^mdr: --path value 2 \(2e-12 N\): below half a q31 LSB of F0' cycle --profile paraboloid --R 1e-3 --E 1e6 \
     --w 0.05 --w-adv 0.05 --control load --path 0,2e-12,-1e-3 --steps-per-segment 10 --arith q31
 if [ -w /dev/full ]; then

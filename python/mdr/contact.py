@@ -49,8 +49,8 @@ class EqState(_Result):
 
 class State(_Result):
     """Any state (a, d), the edge pinned or not: F = 2E*(a d - G(a)) (4.26
-    with G(a) = int_0^a g; computed as `mdr eq --d` does, F_eq + 2E* a (d -
-    d_eq), the same float), K_I = E*(g(a) - d)/sqrt(pi a) (4.17, negative when
+    with G(a) = int_0^a g; computed as `mdr eq --d` does, the same float;
+    as F_eq + 2E* a (d - d_eq) only where G(a) underflows), K_I = E*(g(a) - d)/sqrt(pi a) (4.17, negative when
     the edge is compressed), G = K_I^2/(2E*) (4.14). The edge of a state
     recedes where G > w and advances where G < w_adv (rule of Hess)."""
 

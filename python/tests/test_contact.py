@@ -396,3 +396,39 @@ def test_flattip_pull_off_narrow_window(ratio):
     s = c.critical("grips")
     want = flattip_least_d(R, ratio * astar, E, w, c.default_start())
     assert within(rel(s.d, want), REL64), (ratio, s.a, s.d, want)
+
+
+@pytest.mark.parametrize("arith", ["f64", "f32"])
+def test_pinned_state_force(arith):
+    """The force of a state (a, d) given both, F = 2E* (a d - G(a)) (4.26; no
+    w in it), against closed forms worked out here: the paraboloid (G =
+    a^3/(3R)) and the power law C x^n (G = kappa_n C a^(n+1)/(n+1),
+    kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)) at n = 8 and 4, a
+    over 6 decades, d = 0, 2 g1(a) and -g1(a) (no cancellation in a d - G),
+    w = 0.05 and 50 (the adhesion's terms up to 1e9 times F): within
+    REL64 / REL32 of |F| (at the arithmetic's own a). F was F_eq + 2E* a
+    (d - d_eq), whose adhesive terms cancel (helper-62, stop 68: the
+    paraboloid R 10 um, E* 1 MPa, w 0.05 at a = 1 nm, d = 0 6.3 % off in
+    f32; the power law C 1e20, n 8 at a = 30 um F = 0 in f32, 1.5e-6 off in
+    f64). The CLI prints the same F (test_cli.sh)."""
+    tol = TOL[arith]
+    f = np.float32 if arith == "f32" else float
+    cases = [("paraboloid", dict(R=10e-6), lambda a: a * a / 10e-6, lambda a: a ** 3 / 3e-5, (1e-10, 1e-5))]
+    for n, C, span in ((8.0, 1e20, (1e-6, 1e-3)), (4.0, 1e6, (1e-6, 1e-2))):
+        k = math.sqrt(math.pi) * math.gamma(n / 2 + 1) / math.gamma(n / 2 + 0.5)
+        cases.append(("powerlaw", dict(C=C, n=n), lambda a, k=k, n=n, C=C: k * C * a ** n,
+                      lambda a, k=k, n=n, C=C: k * C * a ** (n + 1) / (n + 1), span))
+    worst = 0.0
+    for profile, params, g1, G, (lo, hi) in cases:
+        for w in (0.05, 50.0):
+            c = mdr.Contact(profile, E=1e6, w=w, arith=arith, **params)
+            for a in np.geomspace(lo, hi, 25):
+                a = float(f(a))  # (the arithmetic's own a)
+                for m in (0.0, 2.0, -1.0):
+                    d = float(f(m * g1(a)))
+                    want = 2e6 * (a * d - G(a))
+                    s = c.eq(a, d=d)
+                    err = abs(s.F / want - 1)
+                    worst = max(worst, err)
+                    assert err <= tol, (profile, params, w, a, d, s.F, want)
+    assert within(worst, tol, "pinned F " + arith)
