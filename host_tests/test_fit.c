@@ -1827,6 +1827,50 @@ static void reverse(double *v, int n)
     }
 }
 
+/* The approach's fit meets its samples or answers nothing (helper-61,
+ * stop 68): a whole curve (regimes[1], w_adv = w, 300 + 300 samples, noise
+ * 0.1 % of the pull-off force) with one approach sample in contact moved by
+ * 3 and 1e5 pull-off forces is refused MDR_E_MISFIT (the retract's own
+ * misfit test, on the approach's samples); before, answered ok, w_adv
+ * 0.006 +- 0.049 for 0.05 (and in helper-61's curve, a sample 1e5 pull-off
+ * forces off, w/4^4, four quartering steps' value, +- 745 J/m^2). The same
+ * curve unmoved is answered, w_adv within 3 of its errors. */
+static void test_approach_misfit(void **state)
+{
+    static const double moves[3] = {0.0, 3.0, 1e5};
+    const jkr_par *p = &regimes[1];
+    const mdr_contact_f64 c = paraboloid64(p->R);
+    const uint64_t saved = noise_state;
+    int k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        const int na = 300, nr = 300;
+        mdr_fit_opts_f64 o;
+        mdr_fit_result_f64 r;
+        mdr_status st;
+        double Fpo = 0.0;
+        int i;
+        noise_state = 0x6A09E667F3BCC908ull;
+        rev_curve(p, p->w, na, nr, 1e-3, zs, Fs);
+        for (i = na; i < na + nr; i++) {
+            Fpo = Fs[i] < Fpo ? Fs[i] : Fpo;
+        }
+        Fs[3 * na / 4] += moves[k] * fabs(Fpo);
+        mdr_fit_defaults_f64(&o, p->km);
+        o.approach = 1;
+        st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)(na + nr), work64, 2 * NMAX, &r);
+        print_message("approach sample moved by %g pull-off forces: %s (w_adv %.4g +- %.2g)\n", moves[k],
+                      mdr_status_str(st), st == MDR_OK ? r.w_adv : 0.0, st == MDR_OK ? r.w_adv_err : 0.0);
+        if (k == 0) {
+            assert_int_equal(st, MDR_OK);
+            assert_true(fabs(r.w_adv - p->w) <= 3 * r.w_adv_err);
+        } else {
+            assert_int_equal(st, MDR_E_MISFIT);
+        }
+    }
+    noise_state = saved;
+}
+
 /* status of the f64 and the f32 fit of zs, Fs (n samples) */
 static void fit_both(const jkr_par *p, uint32_t n, int approach, mdr_status *st64, mdr_status *st32)
 {
@@ -3965,6 +4009,7 @@ int main(void)
         cmocka_unit_test(test_two_point_mc),
 #endif
         cmocka_unit_test(test_approach),
+        cmocka_unit_test(test_approach_misfit),
 #ifndef MDR_TARGET_TEST
         cmocka_unit_test(test_dwell),
         cmocka_unit_test(test_wadv_bound),
