@@ -94,7 +94,7 @@ test: deps-check
 	@mkdir -p $(B) && rm -f $(B)/phase-times
 	$(call test_phase,spdx-check headers-check docs errno-check)
 	$(call test_phase,-j2 host-tests)
-	$(call test_phase,demo-check cmake-check install-check)
+	$(call test_phase,-j2 demo-check cmake-check install-check)
 	$(call test_phase,-j2 lint)
 	$(call test_phase,-j2 san-tests)
 	$(call test_phase,-j2 fused-tests)
@@ -108,7 +108,7 @@ test: deps-check
 	$(call test_phase,target-test)
 	$(call test_phase,python-test)
 	@echo "phase wall times (s): $$(tr '\n' ' ' < $(B)/phase-times)"
-	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli python lint $(SAN_TESTS) san-cli $(FUSED_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
+	@echo "suites: $(words spdx headers docs errno demo cmake install $(TESTS) cli cli-f32 python lint $(SAN_TESTS) san-cli san-cli-f32 $(FUSED_TESTS) matrix $(addprefix replay-,$(FUZZ_TARGETS)) $(addprefix fuzz-,$(FUZZ_TARGETS)) stress q31-exact mutate-quick $(CROSS_CFGS) $(TGT_RUNS)) passed, 0 failed"
 
 deps:
 	@sh mk/deps.sh

@@ -63,12 +63,17 @@ SUITES = [
     ("test_critical", ["host_tests/test_critical.c"], [], ["-lcmocka", "-lm"], [], 60),
     ("test_fit", ["host_tests/test_fit.c"], [], ["-lcmocka", "-lm"], [], 120),
     ("cli", ["examples/mdr_cli.c"], [], ["-lm"], [], 180),
+    ("cli_f32", ["examples/mdr_cli.c"], [], ["-lm"], [], 180),
     ("fit_cli", ["examples/mdr_cli.c"], [], ["-lm", "-pthread"], [], 120),
     ("test_engine_ref", ["host_tests/test_engine_ref.c"], ["ref"], ["-lcmocka"] + GSL, [], 90),
     ("test_q31", ["host_tests/test_q31.c"], ["ref"], ["-lcmocka"] + GSL, [], 120),
     ("stress", ["host_tests/stress.c"], [], ["-lm"], ["short"], 120),
     ("crit_sweep", ["host_tests/crit_sweep.c"], [], ["-lm"], ["short"], 60),
 ]
+
+# the CLI's suites: the script each runs with the mutant's CLI
+CLI_SCRIPTS = {"cli": "host_tests/test_cli.sh", "cli_f32": "host_tests/test_cli_f32.sh",
+               "fit_cli": "host_tests/test_fit_cli.sh"}
 
 # The suites most likely to kill a mutant of each module run first (a survivor
 # still meets every suite: the order only saves time; q31's trace compares the
@@ -295,8 +300,8 @@ def mutant(e, keep):
             return (e["id"], "error", "cannot link %s: %s" % (name, r.stdout.decode()[:200]),
                     time.time() - t0)
         try:
-            if name in ("cli", "fit_cli"):
-                script = "host_tests/test_cli.sh" if name == "cli" else "host_tests/test_fit_cli.sh"
+            if name in CLI_SCRIPTS:
+                script = CLI_SCRIPTS[name]
                 r = run(["bash", os.path.join(ROOT, script), exe], cwd=ROOT, timeout=limit)
                 failed = r.returncode != 0
             elif name == "q31_trace":

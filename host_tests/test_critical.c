@@ -1627,7 +1627,7 @@ int main(void)
         cmocka_unit_test(pull_off_below_range),
         cmocka_unit_test(zeroed_contact),
     };
-    return cmocka_run_group_tests_name("critical", tests, NULL, NULL);
+    return MDR_RUN_TESTS_NAME("critical", tests);
 }
 
 #endif /* applies */

@@ -3,7 +3,8 @@
 # ASan+UBSan, the CLI contract, the option matrix, the stress sweep, the q31
 # bit-exactness across compilers and the mutation gate.
 #
-#   make host-tests   every suite of TESTS, then the CLI (host_tests/test_cli.sh)
+#   make host-tests   every suite of TESTS and the CLI (host_tests/test_cli.sh,
+#                     test_cli_f32.sh: the suites cli and cli-f32)
 #   make san-tests    the suites of SAN_TESTS with -fsanitize=address,undefined
 #   make fused-tests  the suites of FUSED_TESTS, the library with MDR_PORT_FUSED
 #   make matrix       build matrix over mdr_options.h (MATRIX=short|full)
@@ -71,19 +72,26 @@ $(eval $(call suite_run,fused,fused ))
 # nodes, and crashed at 4 096 springs and more, helper-21 at stop 54); the
 # program the script builds from generated headers links the sanitized
 # library beside it, so it gets the same flags (MDR_LINK_FLAGS)
-$(B)/host/cli.run: $(B)/host/mdr host_tests/test_cli.sh
+# (two scripts, run side by side: test_cli.sh and test_cli_f32.sh, the
+# suites cli and cli-f32; first in their phase's list, the longest runs)
+CLI_SH := host_tests/cli_lib.sh
+$(B)/host/cli.run: $(B)/host/mdr host_tests/test_cli.sh $(CLI_SH)
 	@rm -f $@; bash host_tests/test_cli.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "cli failed"; exit 1; }; touch $@
+$(B)/host/cli-f32.run: $(B)/host/mdr host_tests/test_cli_f32.sh $(CLI_SH)
+	@rm -f $@; bash host_tests/test_cli_f32.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "cli-f32 failed"; exit 1; }; touch $@
 $(B)/san/mdr: examples/mdr_cli.c $(wildcard examples/mdr_*.h) examples/tip_csv.h $(B)/san/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include -O1 -g $(SAN) -pthread $< $(B)/san/libmdr.a -lm -o $@
-$(B)/san/cli.run: $(B)/san/mdr host_tests/test_cli.sh
+$(B)/san/cli.run: $(B)/san/mdr host_tests/test_cli.sh $(CLI_SH)
 	@rm -f $@; MDR_LINK_FLAGS="$(SAN)" bash host_tests/test_cli.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "sanitized cli failed"; exit 1; }; touch $@
+$(B)/san/cli-f32.run: $(B)/san/mdr host_tests/test_cli_f32.sh $(CLI_SH)
+	@rm -f $@; bash host_tests/test_cli_f32.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "sanitized cli-f32 failed"; exit 1; }; touch $@
 # run_suites(build, suites, title prefix): run, then print the logs
 run_suites = rm -f $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
   $(MAKE) --no-print-directory $(SUB_J2) $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
   for t in $(2); do echo "== $(3)$$t"; cat $(B)/$(1)/$$t.log; done
 
 host-tests: $(addprefix $(B)/host/,$(TESTS)) $(B)/host/mdr
-	@+$(call run_suites,host,$(TESTS) cli,)
+	@+$(call run_suites,host,cli cli-f32 $(TESTS),)
 $(B)/fused/%.o: lib/src/%.c $(LIB_DEPS)
 	@mkdir -p $(@D)
 	$(HOSTCC) $(MDR_CFLAGS) -O2 -DMDR_PORT_FUSED -c $< -o $@
@@ -96,7 +104,7 @@ fused-tests: $(addprefix $(B)/fused/,$(FUSED_TESTS))
 	  { echo "fused-tests: the library neither calls fmaf nor has the instruction"; exit 1; }
 	@+$(call run_suites,fused,$(FUSED_TESTS),fused )
 san-tests: $(addprefix $(B)/san/,$(SAN_TESTS)) $(B)/san/mdr
-	@+$(call run_suites,san,$(SAN_TESTS) cli,sanitized )
+	@+$(call run_suites,san,cli cli-f32 $(SAN_TESTS),sanitized )
 
 # Build matrix over the compile-time options (lib/include/mdr_options.h):
 # every configuration compiles warning-free and passes the suites that

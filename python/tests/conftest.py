@@ -25,9 +25,12 @@ def cli():
 class Worst:
     """within(err, tol, key=tol): err < tol, remembering the worst err per
     key; every file's worst errors are printed at the end of the run, to
-    keep each tolerance within 10x of what it measures."""
+    keep each tolerance within 10x of what it measures. With pytest-xdist
+    (make python-test runs two workers) each worker sends its worst errors
+    to the controller, which prints them merged."""
 
     files = []
+    merged = {}  # (the controller's: name -> {key: worst err} of every worker)
 
     def __init__(self, name):
         self.name = name
@@ -39,9 +42,31 @@ class Worst:
         self.seen[key] = max(self.seen.get(key, 0.0), err)
         return err < tol
 
+    @staticmethod
+    def merge(name, pairs):
+        seen = Worst.merged.setdefault(name, {})
+        for key, err in pairs:
+            seen[key] = max(seen.get(key, 0.0), err)
+
+
+def pytest_sessionfinish(session):
+    """A worker's worst errors, for the controller (xdist's workeroutput)."""
+    out = getattr(session.config, "workeroutput", None)
+    if out is not None:
+        out["mdr_worst"] = [[w.name, [[k, float(v)] for k, v in w.seen.items()]] for w in Worst.files if w.seen]
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    """The controller: a worker's worst errors into Worst.merged."""
+    for name, pairs in getattr(node, "workeroutput", {}).get("mdr_worst", []):
+        Worst.merge(name, pairs)
+
 
 def pytest_terminal_summary(terminalreporter):
     for w in Worst.files:
         if w.seen:
-            terminalreporter.write_line("%s worst errors: %s" % (w.name, ", ".join(
-                "%s: %.2g" % kv for kv in sorted(w.seen.items()))))
+            Worst.merge(w.name, w.seen.items())
+    for name in sorted(Worst.merged):
+        terminalreporter.write_line("%s worst errors: %s" % (name, ", ".join(
+            "%s: %.2g" % kv for kv in sorted(Worst.merged[name].items()))))
