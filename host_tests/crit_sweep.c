@@ -427,6 +427,9 @@ static void run(const scene *s, int f32, double cond)
         ld k0 = s->k0;
         rep = rep && inrange(k0, f32) && inrange(k0 * powl(1e3L * e.a, s->p1), f32) &&
               inrange(k0 * powl(1e-3L * e.a, s->p1), f32);
+        /* n within 2^10 eps of 1/2: the radius is not resolved to 1 %, and
+         * mdr_critical refuses it (MDR_E_RADIUS) */
+        rep = rep && fabsl(s->p1 - 0.5L) > 1024.0L * (f32 ? 0x1p-24L : 0x1p-53L);
     }
     if (s->kind == MDR_PROFILE_SPHERE) {
         ld omt = 1 - e.a / s->p0; /* a_c within rounding of R */

@@ -799,6 +799,24 @@ for arith in f32 f64; do
     j=$($MDR eq --profile paraboloid --R 10e-6 --E 1e6 --w 0.05 --a 1e-9 --d 0 --arith $arith)
     jcheck "$j" "abs(j['F'] / (-2e6 * j['a'] ** 3 / 3e-5) - 1) <= $tol"
 done
+# helper-62 (stop 68): a power law at n = 1/2 + 1 ulp pulled off at a = d = F = 0,
+# exit 0 (the true radius 38 769 m); within 2^10 eps of 1/2 the radius is not
+# resolved: refused, naming n, as n = 1/2 (every control; stress at the state too)
+for ctl in "load" "grips" "machine --k-machine 1"; do
+    # shellcheck disable=SC2086
+    refuse '^mdr: --n 0.50000000000000011: within 2\^10 eps of 1/2 \(1.1e-13 in f64\) a power law.s critical radius .* \(MDR_E_RADIUS, status -5\)$' \
+        critical --profile powerlaw --C 0.0038992998543832206 --n 0.5000000000000001 --E 2583821.9795740326 \
+        --w 1.194092379323328 --control $ctl --arith f64
+done
+refuse '^mdr: --n 0.5: within 2\^10 eps of 1/2 \(6.1e-05 in f32\)' critical --profile powerlaw --C 1 --n 0.5 --E 1e6 \
+    --w 0.05 --control load
+refuse '^mdr: --n 0.50000999999999995: within 2\^10 eps of 1/2 \(6.1e-05 in f32\)' stress --profile powerlaw --C 1 \
+    --n 0.50001 --E 1e6 --w 0.05 --control load --r 0.5
+# 4 504 eps above 1/2, C for a fixed-load radius of 1 um: answered within 1 %
+C=$(/usr/bin/python3 -c 'import math; n = 0.5000000000005; c = math.sqrt(2 * math.pi * 0.05 / 1e6)
+k = math.sqrt(math.pi) * math.exp(math.lgamma(n / 2 + 1) - math.lgamma(n / 2 + 0.5)); print(repr(1.5 * c / (n * k) * 1e-6 ** (0.5 - n)))')
+out=$($MDR critical --profile powerlaw --C "$C" --n 0.5000000000005 --E 1e6 --w 0.05 --control load --arith f64) &&
+    near "$(key "$out" a)" 1e-6 1e-2 && ok || bad "power law 4504 eps above 1/2, C $C: $out"
 refuse '^mdr: --path value 2 \(2e-12 N\): below half a q31 LSB of F0' cycle --profile paraboloid --R 1e-3 --E 1e6 \
     --w 0.05 --w-adv 0.05 --control load --path 0,2e-12,-1e-3 --steps-per-segment 10 --arith q31
 if [ -w /dev/full ]; then

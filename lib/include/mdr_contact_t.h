@@ -252,8 +252,13 @@ mdr_status MDR_SFX(mdr_stress)(const MDR_SFX(mdr_contact) *c, MDR_T a, MDR_T r,
  *         MDR_E_NONFINITE, MDR_E_CONTROL, MDR_E_RADIUS
  *         (a_start outside the domain; no stable state at or above it: a
  *         power law with n < 1/2 beyond its fold, a table that ends on an
- *         unstable branch; the sphere's critical radius within rounding of
- *         R), MDR_E_OVERFLOW (a critical radius or state beyond the
+ *         unstable branch; a critical radius the arithmetic does not
+ *         resolve: the sphere's within rounding of R, a power law's with
+ *         adhesion where |n - 1/2| <= 2^10 eps, eps the unit roundoff
+ *         (1.1e-13 in f64, 6.1e-5 in f32; n = 1/2 included), whose radius
+ *         (k c/(n kappa C))^(1/(n - 1/2)) moves by e/|n - 1/2| for a
+ *         relative error e of the profile's slope, more than 1 % there:
+ *         at 1 ulp above 1/2 it was answered as 0), MDR_E_OVERFLOW (a critical radius or state beyond the
  *         arithmetic's range, more than 65535 jumps), MDR_E_NOCONV (more
  *         than MDR_CRIT_SCAN_MAX cells: a wavy contact of more than ~65536
  *         wavelengths below its stable radius)
@@ -270,10 +275,11 @@ mdr_status MDR_SFX(mdr_critical)(const MDR_SFX(mdr_contact) *c, uint8_t control,
  *        before issue 16), else twice the root, and below R for the sphere
  *        (halfway from the root to R); at least 1.5 b for the flattened
  *        tip; power laws with n < 1/2: below their load root (min(a_x/3,
- *        root/2)), where they are stable; n = 1/2 exactly, whose g and dl
- *        both grow as sqrt(a) (no length sets a critical radius): 1 m,
- *        which mdr_critical() answers with MDR_E_RADIUS (helper-33, stop
- *        58); the flat punch: a0; a table: its
+ *        root/2)), where they are stable; n = 1/2, whose g and dl both
+ *        grow as sqrt(a) (no length sets a critical radius), and n within
+ *        2^10 eps of 1/2 (see mdr_critical()): the profile's length
+ *        C^(1/(1 - n)), which mdr_critical() answers with MDR_E_RADIUS
+ *        (helper-33, stop 58; helper-62, stop 68); the flat punch: a0; a table: its
  *        last sample; the wavy profile (where the jumps depend on the
  *        start): 3 a_x of its smooth base; without adhesion the profile's
  *        length.

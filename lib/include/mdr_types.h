@@ -50,7 +50,8 @@ typedef int8_t mdr_status;
  *  from mdr_critical(): no stable state at or above the start (the contact
  *  would grow without bound when pressed there, or the stable branch lies
  *  beyond the last sample of a table), or a critical radius beyond the
- *  arithmetic's resolution (the sphere's within one ulp of R). */
+ *  arithmetic's resolution (the sphere's within one ulp of R, a power
+ *  law's with n within 2^10 eps of 1/2, mdr_critical_<type>()). */
 #define MDR_E_RADIUS (-5)
 /** Radial position r outside [0, a). */
 #define MDR_E_POSITION (-6)

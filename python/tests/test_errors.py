@@ -141,6 +141,13 @@ def test_critical_refusals(arith):
         refused("MDR_E_OVERFLOW", blunt.critical, "load")
     else:
         assert blunt.critical("load").a == pytest.approx(4118452.7333e100, rel=2e-11)  # its 11 digits
+    # n within 2^10 eps of 1/2 (n = 1/2 included): the pull-off radius is not
+    # resolved (helper-62: 1 ulp above 1/2 answered a = d = F = 0 for 38 769 m)
+    eps = 2.0 ** (-24 if arith == "f32" else -53)
+    for n in (0.5, 0.5 + eps, 0.5 + 1024 * eps, 0.5 - 2048 * eps / 2):
+        near = mdr.Contact("powerlaw", C=1e-3, n=n, E=1e6, w=0.05, arith=arith)
+        for ctl, km in (("load", None), ("grips", None), ("machine", 1.0)):
+            refused("MDR_E_RADIUS", near.critical, ctl, k_machine=km)
     if arith == "f32":  # beyond float's range: refused, not passed on as inf
         refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=1e39, **P, arith=arith)
         refused("MDR_E_OVERFLOW", mdr.Contact, "paraboloid", R=1e-6, E=1e300, w=0.05, arith=arith)
