@@ -3,8 +3,10 @@
 """host_tests/mutate.py: the mutation gate (make mutate, make mutate-quick).
 
 Applies each mutation of host_tests/mutations.txt to a scratch copy of lib/,
-one at a time, builds the library from the copy, links the fast suites
-against it and runs them in order until one fails (the mutant is "killed").
+one at a time, builds the library from the copy (the units that include the
+mutated file; the others' objects are built once from lib/), links the fast
+suites against it and runs them in order until one fails (the mutant is
+"killed").
 A mutant that every suite passes "survived": a bug the tests would not see.
 Mutants marked `equivalent:` (with the argument why no test can tell them
 from the original) must survive; one that is killed is a list error.
@@ -169,9 +171,39 @@ def check_entry(e):
     return None
 
 
-def prebuild():
+# the library's units compiled once from the real lib/ (B/obj/lib_<unit>.o)
+# and the files each includes (gcc -MM): a mutant recompiles only the units
+# whose sources include its file and links the others' objects (a mutant of
+# lib/src/mdr_status.c compiles one unit of four; of the float modules, two)
+UNIT_DEPS = {}
+
+
+def unit_obj(u):
+    return os.path.join(B, "obj", "lib_" + u + ".o")
+
+
+def prebuild_units(workers):
+    inc = ["-Ilib/include", "-Iport/host"]
+
+    def one(u):
+        src = os.path.join("lib/src", u + ".c")
+        r = run(["gcc"] + WARN_LIB + inc + ["-MM", "-MT", "x", src], cwd=ROOT)
+        if r.returncode != 0:
+            return "mutate: cannot list the includes of %s:\n%s" % (src, r.stdout.decode())
+        deps = r.stdout.decode().replace("\\\n", " ").split(":", 1)[1].split()
+        UNIT_DEPS[u] = set(os.path.normpath(x) for x in deps)
+        r = run(["gcc"] + WARN_LIB + inc + ["-c", src, "-o", unit_obj(u)], cwd=ROOT)
+        return None if r.returncode == 0 else "mutate: cannot compile %s:\n%s" % (src, r.stdout.decode())
+    with cf.ThreadPoolExecutor(max_workers=workers) as ex:
+        errors = [m for m in ex.map(one, UNITS) if m]
+    if errors:
+        sys.exit(errors[0])
+
+
+def prebuild(workers):
     """Test objects and shared objects, compiled once against the real headers."""
     os.makedirs(os.path.join(B, "obj"), exist_ok=True)
+    prebuild_units(workers)
     inc = ["-I" + os.path.join(ROOT, d) for d in ("lib/include", "ref", "port/host", "host_tests",
                                                   "examples", "lib/src")]
     jobs = []
@@ -185,11 +217,11 @@ def prebuild():
         if r.returncode != 0:
             sys.exit("mutate: cannot build build/host/gen_tip.c:\n" + r.stdout.decode())
     jobs.append((gen, os.path.join(B, "obj", "gen_tip.o"), []))
-    for src, obj, extra in jobs:
-        if os.path.isfile(obj) and os.path.getmtime(obj) > max(
-                os.path.getmtime(src), newest_header()):
-            continue
-        r = run(["gcc"] + TEST_CFLAGS + extra + inc + ["-c", src, "-o", obj])
+    todo = [(src, obj, extra) for src, obj, extra in jobs
+            if not (os.path.isfile(obj) and os.path.getmtime(obj) > max(os.path.getmtime(src), newest_header()))]
+    with cf.ThreadPoolExecutor(max_workers=workers) as ex:  # (the compilers run side by side)
+        done = list(ex.map(lambda j: (j[0], run(["gcc"] + TEST_CFLAGS + j[2] + inc + ["-c", j[0], "-o", j[1]])), todo))
+    for src, r in done:
         if r.returncode != 0:
             sys.exit("mutate: cannot compile %s:\n%s" % (src, r.stdout.decode()))
 
@@ -263,6 +295,9 @@ def mutant(e, keep):
     inc = ["-I" + os.path.join(d, "lib/include"), "-I" + os.path.join(ROOT, "port/host")]
     objs = []
     for u in UNITS:
+        if os.path.normpath(e["file"]) not in UNIT_DEPS[u]:
+            objs.append(unit_obj(u))  # (the unit does not include the mutated file)
+            continue
         o = os.path.join(d, u + ".o")
         r = run(["gcc"] + WARN_LIB + inc + ["-c", os.path.join(d, "lib/src", u + ".c"), "-o", o])
         if r.returncode != 0:
@@ -349,7 +384,12 @@ def main(argv):
         entries = [e for e in entries if e["id"] in only]
     elif quick:
         entries = [e for e in entries if e.get("quick") == "yes"]
-    prebuild()
+    prebuild(jobs)
+    lost = [e for e in entries if not any(os.path.normpath(e["file"]) in d for d in UNIT_DEPS.values())]
+    if lost:
+        print("\n".join("mutate: %s: no unit of the library includes %s" % (e["id"], e["file"]) for e in lost),
+              file=sys.stderr)
+        return 2
     t0 = time.time()
     results = {}
     with cf.ThreadPoolExecutor(max_workers=jobs) as ex:
