@@ -104,6 +104,31 @@ static void issue_powerlaw_example(void **st)
  * the closed form in long double (f64) and COND32 (f32), each scene's C
  * making its load radius aL, and below 1/2 every control peels to a = 0. Tolerance: NEARHALF 16 eps/|n - 1/2|
  * (measured against 50 digits: 3.2 to 7.7). */
+/* one search of powerlaw_near_half in arithmetic S (T its type, MK its
+ * contact maker): from the default start (*s1, its a, d, F in g) and, where
+ * refused, from the hint aL (*s2), each refusal leaving the output untouched */
+#define NEAR_HALF_ONE(T, S, MK)                                                                    \
+    static void near_half_##S(double C, double n, double E, double w, uint8_t ctl, double aL, int refused, \
+                              mdr_status *s1, mdr_status *s2, double g[3])                         \
+    {                                                                                              \
+        mdr_contact_##S c = MK(MDR_PROFILE_POWERLAW, C, n, 0, E, w);                                \
+        mdr_critstate_##S o;                                                                       \
+        T a0 = 0;                                                                                  \
+        assert_int_equal(mdr_default_start_##S(&c, &a0), MDR_OK);                                 \
+        memset(&o, GUARD, sizeof o);                                                               \
+        *s1 = mdr_critical_##S(&c, ctl, (T)1, a0, &o);                                             \
+        g[0] = (double)o.a;                                                                        \
+        g[1] = (double)o.d;                                                                        \
+        g[2] = (double)o.F;                                                                        \
+        *s2 = MDR_E_RADIUS;                                                                        \
+        if (refused) {                                                                             \
+            assert_true(untouched(&o, sizeof o));                                                  \
+            *s2 = mdr_critical_##S(&c, ctl, (T)1, (T)aL, &o);                                      \
+            assert_true(untouched(&o, sizeof o));                                                  \
+        }                                                                                          \
+    }
+NEAR_HALF_ONE(float, f32, mk32)
+NEAR_HALF_ONE(double, f64, mk64)
 #define NEARHALF(p, eps) (16.0 * (eps) / fabs(p))
 #define COND32(p) (2e-6 / fabs(p))
 static void powerlaw_near_half(void **st)
@@ -148,36 +173,15 @@ static void powerlaw_near_half(void **st)
                          p / eps, C, E, w, aL);
                 for (k = 0; k < 3; k++) {
                     mdr_status s1, s2;
-                    double ga, gd, gF;
+                    double g[3], ga, gd, gF;
                     if (arith) {
-                        mdr_contact_f32 c = mk32(MDR_PROFILE_POWERLAW, C, n, 0, E, w);
-                        mdr_critstate_f32 o;
-                        float a0 = 0;
-                        assert_int_equal(mdr_default_start_f32(&c, &a0), MDR_OK);
-                        memset(&o, GUARD, sizeof o);
-                        s1 = mdr_critical_f32(&c, ctl[k], 1.0f, a0, &o);
-                        ga = o.a;
-                        gd = o.d;
-                        gF = o.F;
-                        s2 = refused ? mdr_critical_f32(&c, ctl[k], 1.0f, (float)aL, &o) : MDR_E_RADIUS;
-                        if (refused) {
-                            assert_true(untouched(&o, sizeof o));
-                        }
+                        near_half_f32(C, n, E, w, ctl[k], aL, refused, &s1, &s2, g);
                     } else {
-                        mdr_contact_f64 c = mk64(MDR_PROFILE_POWERLAW, C, n, 0, E, w);
-                        mdr_critstate_f64 o;
-                        double a0 = 0;
-                        assert_int_equal(mdr_default_start_f64(&c, &a0), MDR_OK);
-                        memset(&o, GUARD, sizeof o);
-                        s1 = mdr_critical_f64(&c, ctl[k], 1.0, a0, &o);
-                        ga = o.a;
-                        gd = o.d;
-                        gF = o.F;
-                        s2 = refused ? mdr_critical_f64(&c, ctl[k], 1.0, aL, &o) : MDR_E_RADIUS;
-                        if (refused) {
-                            assert_true(untouched(&o, sizeof o));
-                        }
+                        near_half_f64(C, n, E, w, ctl[k], aL, refused, &s1, &s2, g);
                     }
+                    ga = g[0];
+                    gd = g[1];
+                    gF = g[2];
                     if (refused) {
                         if (s1 != MDR_E_RADIUS || s2 != MDR_E_RADIUS) {
                             fail_msg("%s, control %d: status %d and %d (hint aL), want MDR_E_RADIUS (%d)", what,
