@@ -796,14 +796,14 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
                 return usage_errf("--a-start %.9g: outside the profile's domain (%s, status %d)", A->a_start,
                                   cli_stname(st), (int)st);
             }
-            if (A->kind == MDR_PROFILE_POWERLAW && A->w > 0 &&
-                fabs((double)(CLI_T)A->p[1] - 0.5) <= 1024.0 * (CLI_F64 ? 0x1p-53 : 0x1p-24)) {
-                /* (mdr_critical's refusal next to n = 1/2, helper-62) */
+            /* (mdr_critical's refusal next to n = 1/2, helper-62: its band
+             * of MDR_CRIT_HALF_BAND unit roundoffs) */
+            const double band = MDR_CRIT_HALF_BAND * (CLI_F64 ? DBL_EPSILON : (double)FLT_EPSILON) / 2;
+            if (A->kind == MDR_PROFILE_POWERLAW && A->w > 0 && fabs((double)(CLI_T)A->p[1] - 0.5) <= band) {
                 return usage_errf("--n %.17g: within 2^10 eps of 1/2 (%.2g in %s) a power law's critical radius "
                                   "(3c/(2 n kappa C))^(1/(n - 1/2)) is not resolved to 1 %%, and n = 1/2 has none "
                                   "(%s, status %d)",
-                                  A->p[1], 1024.0 * (CLI_F64 ? 0x1p-53 : 0x1p-24), CLI_F64 ? "f64" : "f32",
-                                  cli_stname(st), (int)st);
+                                  A->p[1], band, CLI_F64 ? "f64" : "f32", cli_stname(st), (int)st);
             }
             if (A->kind == KIND_TABLE) {
                 return usage_errf("%s: the tip ends (its last sample r = %.9g m) before the pull-off: its contact "

@@ -7,8 +7,9 @@ pass=0
 fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-near() { # near VALUE WANT RELTOL
-    awk -v x="$1" -v y="$2" -v t="$3" 'BEGIN { d = x - y; if (d < 0) d = -d; s = y < 0 ? -y : y; exit !(d <= t * s) }'
+near() { # near VALUES WANTS RELTOL: each value (space-separated) within RELTOL of its want
+    awk -v x="$1" -v y="$2" -v t="$3" 'BEGIN { n = split(x, u, " "); if (split(y, v, " ") != n) exit 1
+        for (k = 1; k <= n; k++) { d = u[k] - v[k]; if (d < 0) d = -d; s = v[k] < 0 ? -v[k] : v[k]; if (!(d <= t * s)) exit 1 } }'
 }
 key() { # key JSON NAME -> the value of the top-level key NAME as JSON
     # ("q31" with its quotes, null, true, a number); nothing if the text is

@@ -217,11 +217,15 @@ def prebuild(workers):
         if r.returncode != 0:
             sys.exit("mutate: cannot build build/host/gen_tip.c:\n" + r.stdout.decode())
     jobs.append((gen, os.path.join(B, "obj", "gen_tip.o"), []))
-    todo = [(src, obj, extra) for src, obj, extra in jobs
-            if not (os.path.isfile(obj) and os.path.getmtime(obj) > max(os.path.getmtime(src), newest_header()))]
+    stale = [(src, obj, extra) for src, obj, extra in jobs
+             if not (os.path.isfile(obj) and os.path.getmtime(obj) > max(os.path.getmtime(src), newest_header()))]
+
+    def compile_one(job):
+        src, obj, extra = job
+        return src, run(["gcc"] + TEST_CFLAGS + extra + inc + ["-c", src, "-o", obj])
     with cf.ThreadPoolExecutor(max_workers=workers) as ex:  # (the compilers run side by side)
-        done = list(ex.map(lambda j: (j[0], run(["gcc"] + TEST_CFLAGS + j[2] + inc + ["-c", j[0], "-o", j[1]])), todo))
-    for src, r in done:
+        compiled = list(ex.map(compile_one, stale))
+    for src, r in compiled:
         if r.returncode != 0:
             sys.exit("mutate: cannot compile %s:\n%s" % (src, r.stdout.decode()))
 

@@ -35,9 +35,7 @@ cone_f32() { # cone_f32 THETA CONTROL -> "accepted" (within 2e-6 of f64), "refus
     f=$($MDR critical --profile cone --theta "$1" --E 1e9 --w 0.05 --control "$2" --arith f64) || { echo "f64 failed"; return; }
     nums "$o" a d F && x=$NUMS || { echo "f32: $NUMS in $o"; return; }
     nums "$f" a d F && y=$NUMS || { echo "f64: $NUMS in $f"; return; }
-    awk -v x="$x" -v y="$y" 'BEGIN { split(x, u, " "); split(y, v, " ");
-        for (k = 1; k <= 3; k++) { d = u[k] - v[k]; s = v[k]; if (d < 0) d = -d; if (s < 0) s = -s; if (d > 2e-6 * s) exit 1 } }' &&
-        echo accepted || echo "a d F $x vs f64 $y"
+    near "$x" "$y" 2e-6 && echo accepted || echo "a d F $x vs f64 $y"
 }
 tally() { # tally RESULT WHAT: an f32 sweep's answer counted (nacc, nref), else a failure
     case $1 in

@@ -74,21 +74,22 @@ $(eval $(call suite_run,fused,fused ))
 # library beside it, so it gets the same flags (MDR_LINK_FLAGS)
 # (two scripts, run side by side: test_cli.sh and test_cli_f32.sh, the
 # suites cli and cli-f32; first in their phase's list, the longest runs)
+# cli_run(build, suite, script, environment, title prefix): one CLI suite's run
 CLI_SH := host_tests/cli_lib.sh
-$(B)/host/cli.run: $(B)/host/mdr host_tests/test_cli.sh $(CLI_SH)
-	@rm -f $@; bash host_tests/test_cli.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "cli failed"; exit 1; }; touch $@
-$(B)/host/cli-f32.run: $(B)/host/mdr host_tests/test_cli_f32.sh $(CLI_SH)
-	@rm -f $@; bash host_tests/test_cli_f32.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "cli-f32 failed"; exit 1; }; touch $@
+define cli_run
+$(B)/$(1)/$(2).run: $(B)/$(1)/mdr host_tests/$(3) $(CLI_SH)
+	@rm -f $$@; $(4) bash host_tests/$(3) $$< > $$(@:.run=.log) 2>&1 || { cat $$(@:.run=.log); echo "$(5)$(2) failed"; exit 1; }; touch $$@
+endef
+$(eval $(call cli_run,host,cli,test_cli.sh,,))
+$(eval $(call cli_run,host,cli-f32,test_cli_f32.sh,,))
 $(B)/san/mdr: examples/mdr_cli.c $(wildcard examples/mdr_*.h) examples/tip_csv.h $(B)/san/libmdr.a
 	$(HOSTCC) -std=c99 $(WARN) -Ilib/include -O1 -g $(SAN) -pthread $< $(B)/san/libmdr.a -lm -o $@
-$(B)/san/cli.run: $(B)/san/mdr host_tests/test_cli.sh $(CLI_SH)
-	@rm -f $@; MDR_LINK_FLAGS="$(SAN)" bash host_tests/test_cli.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "sanitized cli failed"; exit 1; }; touch $@
+$(eval $(call cli_run,san,cli,test_cli.sh,MDR_LINK_FLAGS="$(SAN)",sanitized ))
 # (cli-f32 without LeakSanitizer's exit scan, 45 ms a process: its 560
 # runs repeat eq, critical, curve and stress, whose allocations the
 # sanitized cli suite checks for leaks; ASan and UBSan check every run: 68 s
 # -> 44 s here)
-$(B)/san/cli-f32.run: $(B)/san/mdr host_tests/test_cli_f32.sh $(CLI_SH)
-	@rm -f $@; ASAN_OPTIONS=detect_leaks=0 bash host_tests/test_cli_f32.sh $< > $(@:.run=.log) 2>&1 || { cat $(@:.run=.log); echo "sanitized cli-f32 failed"; exit 1; }; touch $@
+$(eval $(call cli_run,san,cli-f32,test_cli_f32.sh,ASAN_OPTIONS=detect_leaks=0,sanitized ))
 # run_suites(build, suites, title prefix): run, then print the logs
 run_suites = rm -f $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \
   $(MAKE) --no-print-directory $(SUB_J2) $(addprefix $(B)/$(1)/,$(addsuffix .run,$(2))) && \

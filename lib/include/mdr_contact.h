@@ -22,4 +22,10 @@
  *  a table two per sample interval (every table fits). */
 #define MDR_CRIT_SCAN_MAX 262144
 
+/** The band around n = 1/2 in which mdr_critical_<type>() refuses a power
+ *  law with adhesion (MDR_E_RADIUS): |n - 1/2| <= MDR_CRIT_HALF_BAND eps,
+ *  eps the arithmetic's unit roundoff (2^-53 in f64, 2^-24 in f32), where
+ *  its critical radius is not resolved to 1 %. */
+#define MDR_CRIT_HALF_BAND 1024
+
 #endif /* MDR_CONTACT_H */

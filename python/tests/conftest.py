@@ -38,13 +38,12 @@ class Worst:
         Worst.files.append(self)
 
     def __call__(self, err, tol, key=None):
-        key = "%.3g" % tol if key is None else key
-        self.seen[key] = max(self.seen.get(key, 0.0), err)
+        Worst.keep(self.seen, [("%.3g" % tol if key is None else key, err)])
         return err < tol
 
     @staticmethod
-    def merge(name, pairs):
-        seen = Worst.merged.setdefault(name, {})
+    def keep(seen, pairs):
+        """The worst err per key of pairs (key, err) into seen."""
         for key, err in pairs:
             seen[key] = max(seen.get(key, 0.0), err)
 
@@ -60,13 +59,13 @@ def pytest_sessionfinish(session):
 def pytest_testnodedown(node, error):
     """The controller: a worker's worst errors into Worst.merged."""
     for name, pairs in getattr(node, "workeroutput", {}).get("mdr_worst", []):
-        Worst.merge(name, pairs)
+        Worst.keep(Worst.merged.setdefault(name, {}), pairs)
 
 
 def pytest_terminal_summary(terminalreporter):
     for w in Worst.files:
         if w.seen:
-            Worst.merge(w.name, w.seen.items())
+            Worst.keep(Worst.merged.setdefault(w.name, {}), w.seen.items())
     for name in sorted(Worst.merged):
         terminalreporter.write_line("%s worst errors: %s" % (name, ", ".join(
             "%s: %.2g" % kv for kv in sorted(Worst.merged[name].items()))))
