@@ -396,21 +396,49 @@ static void json_num(cli_json *j, const char *key, double v)
     fprintf(j->fp, j->f64 ? "%.17g" : "%.9g", v);
 }
 
-static void json_str(cli_json *j, const char *key, const char *v)
+/* a JSON string value (no key) */
+static void json_strv(FILE *fp, const char *v)
 {
-    json_key(j, key);
-    fputc('"', j->fp);
+    fputc('"', fp);
     for (; *v; v++) {
         unsigned char ch = (unsigned char)*v;
         if (ch == '"' || ch == '\\') {
-            fprintf(j->fp, "\\%c", ch);
+            fprintf(fp, "\\%c", ch);
         } else if (ch < 0x20) {
-            fprintf(j->fp, "\\u%04x", ch);
+            fprintf(fp, "\\u%04x", ch);
         } else {
-            fputc(ch, j->fp);
+            fputc(ch, fp);
         }
     }
-    fputc('"', j->fp);
+    fputc('"', fp);
+}
+
+static void json_str(cli_json *j, const char *key, const char *v)
+{
+    json_key(j, key);
+    json_strv(j->fp, v);
+}
+
+/* The fewest springs per wavelength at which a wavy profile's table
+ * resolves its waves (docs/engine.md): with fewer, `cycle`
+ * and `table` say so (the summary's "warnings"; helper-63, stop 70: 6.4
+ * springs per wavelength put an approach fold 8 % below the profile's, 0.9
+ * reported 56 of 198 jumps and a pull-off 4 % off, exit 0 and silent). */
+#define CLI_WAVY_SPW 8.0
+
+/* The warning of a table of spring width h [m] for profile A: a wavy
+ * profile's springs per wavelength below CLI_WAVY_SPW, written into buf
+ * (empty: none). */
+static void table_warning(const struct cli_args *A, double h, char *buf, size_t len)
+{
+    const double spw = A->kind == MDR_PROFILE_WAVY && h > 0 ? A->p[2] / h : CLI_WAVY_SPW;
+    buf[0] = '\0';
+    if (spw < CLI_WAVY_SPW) {
+        (void)snprintf(buf, len,
+                       "%.3g springs per wavelength (--lambda %.9g m, spring width %.9g m): below %g the waves "
+                       "are not resolved; more --springs or a lower --a-max",
+                       spw, A->p[2], h, CLI_WAVY_SPW);
+    }
 }
 
 static const char *control_name(uint8_t c)
@@ -759,26 +787,33 @@ static const char *const usage_cmd[NCMD] = {
     "  drives the spring engine along the piecewise-linear path of the controlled\n"
     "  variable (d [m], F [N] or z [m]). CSV step,z,d,F,a,event on stdout; the JSON\n"
     "  summary (pull_off_F, pull_off_d, events, dissipated, cycles, jumps, springs,\n"
-    "  a_max, max_tensile_F, max_tensile_d, event_list, input, units) on stderr, or in\n"
-    "  FILE with --summary FILE (a run that fails, exit 1: its one line on stderr, the\n"
-    "  summary up to the failure in FILE only). --k-machine K [N/m]: the machine\n"
-    "  stiffness, needed by --control machine; under grips or load it sets the CSV's z =\n"
-    "  d + F/K (without it z = d) and nothing else. --w-adv W: work of adhesion on\n"
-    "  approach (default 0, echoed in the summary). --springs N: default 1024 (2..16384;\n"
-    "  q31: a power of two). --a-max: the table extent, default 1.25 x the largest radius\n"
-    "  the path can reach (to 1e-6: where the equilibrium curve of w first reaches the\n"
-    "  path's largest value; the sphere: at most 0.999 R). q31: the fixed-point engine on\n"
-    "  the table converted from the f64 one; the path must stay within its input range\n"
-    "  (+-2 units of D0, F0 or Z0; machine: z >= z_min, where the free body's depth\n"
-    "  fits), else it is refused. The q31 default extent is that one doubled, at most 8\n"
-    "  times, until the q31 table exists and the whole path fits (the units grow with the\n"
-    "  table); an explicit --a-max is kept.\n",
+    "  a_max, max_tensile_F, max_tensile_d, event_list, warnings, input, units) on\n"
+    "  stderr, or in FILE with --summary FILE (a run that fails, exit 1: its one line\n"
+    "  on stderr, the summary up to the failure in FILE only). pull_off_F, pull_off_d:\n"
+    "  the last pull-off's state (each one is in event_list; max_tensile_F is the most\n"
+    "  tensile force of the whole run). A body that has pulled off under --control load\n"
+    "  carries no force (F = 0) at the depth it left from, whatever the load asked,\n"
+    "  until it touches again. warnings: a wavy profile's table with fewer than 8\n"
+    "  springs per wavelength, whose folds and jumps it does not resolve (also a line\n"
+    "  on stderr with --summary FILE). --k-machine K [N/m]: the machine stiffness,\n"
+    "  needed by --control machine; under grips or load it sets the CSV's z = d + F/K\n"
+    "  (without it z = d) and nothing else. --w-adv W: work of adhesion on approach\n"
+    "  (default 0, echoed in the summary). --springs N: default 1024 (2..16384; q31: a\n"
+    "  power of two). --a-max: the table extent, default 1.25 x the largest radius the\n"
+    "  path can reach (to 1e-6: where the equilibrium curve of w first reaches the\n"
+    "  path's largest value; the sphere: at most 0.999 R). q31: the fixed-point engine\n"
+    "  on the table converted from the f64 one; the path must stay within its input\n"
+    "  range (+-2 units of D0, F0 or Z0; machine: z >= z_min, where the free body's\n"
+    "  depth fits), else it is refused. The q31 default extent is that one doubled, at\n"
+    "  most 8 times, until the q31 table exists and the whole path fits (the units grow\n"
+    "  with the table); an explicit --a-max is kept.\n",
     /* table */
     "usage: mdr table <profile> [--springs N] --a-max A [--name NAME] [--arith f32|f64|q31]\n"
     "                 [--output FILE.c] [--header FILE.h]\n"
     "  the spring table as const C arrays (for flash), on stdout or in FILE.c; the\n"
     "  header declaring it goes to FILE.h (--header), or next to FILE.c (--output,\n"
-    "  FILE.h); the .c then includes it. q31: N must be a power of two.\n",
+    "  FILE.h); the .c then includes it. q31: N must be a power of two. A wavy profile's\n"
+    "  table with fewer than 8 springs per wavelength: a warning line on stderr.\n",
     /* fit */
     "usage: mdr fit (--curve FILE | --map FILE) <profile> --k-machine K [--arith f32|f64]\n"
     "               [--method full|two-point] [--approach] [--unpinned] [--z-e ZE] [--E0 E --w0 W]\n"

@@ -218,6 +218,13 @@ static int CLI_SFX(table_cmd)(const struct cli_args *A)
     FILE *out = stdout;
     int rc = CLI_SFX(make_table)(A, &tab, &nodes);
     unsigned i;
+    if (rc == 0) {
+        char warn[256];
+        table_warning(A, (double)tab.h, warn, sizeof warn);
+        if (warn[0] != '\0') {
+            fprintf(stderr, "mdr: warning: %s\n", warn);
+        }
+    }
     if (rc == 0 && A->q31) {
         mdr_status st = MDR_E_SIZE;
         qn = malloc(MDR_TABLE_NODES(tab.n) * sizeof *qn);
@@ -314,10 +321,12 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
     double dissipated;
     FILE *sum = NULL;
     cli_json js;
+    char warn[256];
     if (rc != 0) {
         free(nodes);
         return rc;
     }
+    table_warning(A, (double)tab.h, warn, sizeof warn);
     if (A->q31) {
         qnodes = malloc(MDR_TABLE_NODES(tab.n) * sizeof *qnodes);
         st = MDR_E_SIZE;
@@ -482,6 +491,9 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
             return usage_sys("cannot write --summary", A->summary);
         }
     }
+    if (sum != NULL && warn[0] != '\0') {
+        fprintf(stderr, "mdr: warning: %s\n", warn); /* (stderr free of the summary) */
+    }
     memset(&po, 0, sizeof po);
     printf("step,z,d,F,a,event\n");
     for (seg = 0; seg + 1 < A->npath && rc == 0; seg++) {
@@ -607,6 +619,12 @@ static int CLI_SFX(cycle_cmd)(const struct cli_args *A)
         json_str(&js, "arith", A->q31 ? "q31" : CLI_NAME);
         json_key(&js, "event_list");
         fprintf(js.fp, "[%s]", list ? list : "");
+        json_key(&js, "warnings");
+        fputc('[', js.fp);
+        if (warn[0] != '\0') {
+            json_strv(js.fp, warn);
+        }
+        fputc(']', js.fp);
         /* the event objects' keys, for the units object */
         json_key_only(&js, "a0");
         json_key_only(&js, "d0");

@@ -831,6 +831,32 @@ if [ -w /dev/full ]; then
             bad "mdr $args >/dev/full: exit 1 and one line ($(cat "$TMP/err"))"
     done
 fi
+# a wavy profile's table with fewer than 8 springs per wavelength says so
+# (helper-63, stop 70: silent before): the summary's "warnings" (empty
+# otherwise, for every command that has a table), and a line on stderr where
+# stderr is free of the summary (--summary FILE, table). 64 springs over the
+# default extent of this path: 6.32 per wavelength; 1 024: 25.3.
+WV="--profile wavy --R 1e-5 --h 1.5e-8 --lambda 5e-7 --E 1e6 --w 0.05 --control grips --path 0,5e-7,-5e-7 --steps-per-segment 10"
+for arith in f64 f32; do
+    # shellcheck disable=SC2086
+    j=$($MDR cycle $WV --springs 64 --arith $arith 2>&1 >/dev/null)
+    jcheck "$j" "len(j['warnings']) == 1 and j['warnings'][0].startswith('6.32 springs per wavelength (--lambda 5e-07 m') and j['jumps'] > 0"
+    # shellcheck disable=SC2086
+    j=$($MDR cycle $WV --arith $arith 2>&1 >/dev/null)
+    jcheck "$j" "j['warnings'] == [] and j['springs'] == 1024"
+    # shellcheck disable=SC2086
+    $MDR cycle $WV --springs 64 --arith $arith --summary "$TMP/wv.json" >/dev/null 2>"$TMP/err"
+    [ $? -eq 0 ] && [ "$(wc -l <"$TMP/err")" -eq 1 ] &&
+        grep -q '^mdr: warning: 6.32 springs per wavelength .*below 8 the waves are not resolved; more --springs or a lower --a-max$' "$TMP/err" &&
+        jcheck "$(cat "$TMP/wv.json")" "len(j['warnings']) == 1" || bad "cycle --summary: the warning on stderr ($(cat "$TMP/err"))"
+done
+j=$($MDR cycle --profile paraboloid --R 10e-6 --E 1e6 --w 0.05 --control grips --path 0,1e-6 --steps-per-segment 10 --springs 2 2>&1 >/dev/null)
+jcheck "$j" "j['warnings'] == []"
+$MDR table --profile wavy --R 1e-5 --h 1.5e-8 --lambda 5e-7 --springs 64 --a-max 4.5e-6 >/dev/null 2>"$TMP/err"
+[ $? -eq 0 ] && [ "$(wc -l <"$TMP/err")" -eq 1 ] && grep -q '^mdr: warning: 7.11 springs per wavelength' "$TMP/err" &&
+    ok || bad "table: the wavy warning ($(cat "$TMP/err"))"
+$MDR table --profile wavy --R 1e-5 --h 1.5e-8 --lambda 5e-7 --springs 64 --a-max 3.9e-6 >/dev/null 2>"$TMP/err"
+[ $? -eq 0 ] && [ ! -s "$TMP/err" ] && ok || bad "table: 8.2 springs per wavelength, no warning ($(cat "$TMP/err"))"
 refuse '^mdr: --output and --header name the same file' table --profile paraboloid --R 1e-3 --a-max 1e-4 \
     --header "$TMP/same.h" --output "$TMP/same.h"
 

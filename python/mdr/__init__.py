@@ -16,13 +16,13 @@ SI units everywhere; compressive force and depth into the surface positive;
 w is the work of adhesion. Every refusal of the library raises mdr.Error
 (.status, e.g. "MDR_E_RADIUS", and the library's text).
 """
-from ._core import Error, event_name, ffi, lib, status_text
+from ._core import Error, ResolutionWarning, event_name, ffi, lib, status_text
 from .contact import PROFILES, Contact, Critical, EqState, Profile, State
 from .engine import Engine, Event, Run
 from .fitting import FitResult, fit
 
 __version__ = "%d.%d" % (lib.MDR_VERSION_MAJOR, lib.MDR_VERSION_MINOR)
-__all__ = ["Contact", "Engine", "Error", "fit", "FitResult", "Run", "Event", "EqState", "State", "Critical", "Profile", "PROFILES",
+__all__ = ["Contact", "Engine", "Error", "ResolutionWarning", "fit", "FitResult", "Run", "Event", "EqState", "State", "Critical", "Profile", "PROFILES",
            "plot", "status_text", "event_name", "ffi", "lib"]  # ffi, lib: the extension itself
 
 

@@ -23,6 +23,19 @@ def event_name(code):
     return ffi.string(lib.mdr_event_str(code)).decode()
 
 
+class ResolutionWarning(UserWarning):
+    """A spring table too coarse for its profile (issued by mdr.Engine, like
+    `mdr cycle`'s summary "warnings"): a wavy profile's table with fewer
+    than 8 springs per wavelength, whose folds and jumps it does not resolve
+    (docs/engine.md). The run goes on; more springs or a smaller a_max
+    resolve the waves."""
+
+
+#: the fewest springs per wavelength at which a wavy profile's table
+#: resolves its waves (examples/mdr_cli.c, CLI_WAVY_SPW)
+WAVY_SPRINGS_PER_WAVELENGTH = 8.0
+
+
 class Error(ValueError):
     """A refusal of libmdr.
 

@@ -6,10 +6,11 @@ tick values, for q31 the same SI <-> raw conversion (examples/mdr_host.h).
 The ticks run in C (python/src/mdr_py.c); Python sees whole arrays.
 """
 import collections
+import warnings
 
 import numpy as np
 
-from ._core import ARITHS, Error, check, control_code, dptr, event_name, f32_shape, ffi, lib, narrow, real_array
+from ._core import ARITHS, WAVY_SPRINGS_PER_WAVELENGTH, Error, ResolutionWarning, check, control_code, dptr, event_name, f32_shape, ffi, lib, narrow, real_array
 from .contact import Contact
 
 #: one event of a run (MDR_EV_*): kind ("contact", "jump-in", "jump",
@@ -70,7 +71,9 @@ class Engine:
     refused at once: MDR_E_SIZE; a string or bool where a number goes:
     TypeError). A sampled tip: Engine(mdr.Contact("table", r=..., f=...,
     E=..., w=...)) or Engine.from_tip(r, f, E=..., w=...), the same table
-    (to the last sample r[-1]; a_max is not taken).
+    (to the last sample r[-1]; a_max is not taken). A wavy profile's table
+    with fewer than 8 springs per wavelength, which does not resolve its
+    waves, issues an mdr.ResolutionWarning (when the table is made).
     An Engine holds state: run it from one thread at a time (the C loop
     runs without the GIL); Contacts are read-only and may be shared.
     """
@@ -168,6 +171,14 @@ class Engine:
                   "" if path is None else ", chosen from the run's path, whose largest value is %.9g" %
                   float(np.max(path))))
         self._x, self._nodes, self.a_max = x, nodes, a_max
+        if c.profile == "wavy":
+            spw = c.params["lam"] * self.springs / a_max
+            if spw < WAVY_SPRINGS_PER_WAVELENGTH:
+                warnings.warn(ResolutionWarning(
+                    "Engine(%r, springs=%d, a_max=%.9g): %.3g springs per wavelength (lam %.9g m): below %g the "
+                    "waves are not resolved; more springs or a lower a_max" % (
+                        c.profile, self.springs, a_max, spw, c.params["lam"], WAVY_SPRINGS_PER_WAVELENGTH)),
+                    stacklevel=3)
 
     def _info(self):
         if self._x is None:
