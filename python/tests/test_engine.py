@@ -19,6 +19,10 @@ Tolerances:
       area int F dd from the trapezoids over the ticks of the finest run (fixed
       grips, the jump split at its states; their own error falls with the
       tick, 2.5e-6 at 4000, 3.8e-9 at 256 000): LOOP = 1e-8 relative [3.8e-9].
+  q31 jump loss over many springs (test_q31_jump_loss_over_many_springs):
+      a flattened tip's rim pull-off against 2 pi b^2 w, Q31DISS and DISS64 =
+      1e-4 (the table's resolution of the rim) [3.3e-6, 2.5e-5]; through a
+      machine q31 against f64 Q31DISSM = 1e-3 [1.3e-4].
   z = d + F/k_machine on every tick: floats (z the control as given) ZREL =
       4 ulp of the parts' scale, 2E* a |d|/k included [1.1, 1.2]; q31 ZQ31 =
       2 x the summed LSB of the three terms [0.2].
@@ -321,6 +325,33 @@ def test_machine_base_position(arith):
         eps = np.finfo(np.float32 if arith == "f32" else np.float64).eps
         scale = np.abs(run.z) + np.abs(run.d) + np.abs(run.F / k) + 2 * E * run.a * np.abs(run.d) / k
         assert within(float(np.max(err / (scale + 1e-300)) / eps), 4, "ZREL")
+
+
+def test_q31_jump_loss_over_many_springs():
+    """helper-64's flattened tip (E* 6.6 GPa, w = w_adv = 1.15 mJ/m^2, R 95 um,
+    b 8.7 um) on 16 384 springs to 10 b, pulled off at its rim under grips:
+    the cycle dissipates the elastic energy left at the pull-off, E* b d^2 =
+    2 pi b^2 w: within 1e-4 of it (the table's resolution of the rim),
+    q31 [3.3e-6] and f64 [2.5e-5]. The q31 pull-off's loss runs over the 1 638 springs on the
+    flat, which share one integrand: each rounded to Q48 alone, they lost
+    8.5 % of the answer (0.46 LSB per spring, one way). And a flattened tip
+    through a machine (1 024 springs, no hysteresis on approach), q31 within
+    1e-3 of f64 [1.3e-4; 1.7e-2 before]."""
+    R, b, E, w = 9.504773852263203e-05, 8.655549767899156e-06, 6619171691.540726, 0.0011533812578265112
+    c = mdr.Contact("flattip", E=E, w=w, R=R, b=b)
+    want = 2 * math.pi * b * b * w
+    for arith, tol in (("q31", 1e-4), ("f64", 1e-4)):
+        run = mdr.Engine(c, springs=16384, w_adv=w, arith=arith, a_max=10 * b).run(
+            [0, 2e-9, -1e-8], control="grips", steps_per_segment=100)
+        assert run.cycles == 1
+        assert within(abs(run.dissipated / want - 1), tol, "Q31DISS" if arith == "q31" else "DISS64")
+    c = mdr.Contact("flattip", E=2129805607.4465203, w=0.001456083785336899, R=0.0008682488201839825,
+                    b=0.00018989790357670222)
+    runs = [mdr.Engine(c, springs=1024, k_machine=223825087.09023264, arith=arith).run(
+        [0, 9.299726961054548e-09, -1.6121120476121006e-07], control="machine", steps_per_segment=5)
+        for arith in ("q31", "f64")]
+    assert runs[0].cycles == runs[1].cycles == 1
+    assert within(abs(runs[0].dissipated / runs[1].dissipated - 1), 1e-3, "Q31DISSM")
 
 
 @pytest.mark.parametrize("arith", ["f32", "f64", "q31"])
