@@ -186,6 +186,14 @@ static int CLI_SFX(q31_table_fail)(const struct cli_args *A, const CLI_SFX(mdr_t
          * the table shortens (the flattened tip R = 1 mm, b = 50 um on
          * 1 024 springs: 32.5 at a_max = 60 um, 120 at 51 um; a helper's
          * find, stop 57: the message said "lower --a-max") */
+        /* (a sampled tip's table ends at its last sample: only fewer
+         * springs help there; helper-64, stop 70: the message offered a
+         * higher --a-max, which that profile refuses) */
+        if (A->kind == KIND_TABLE) {
+            return usage_errf("q31 table: the profile is too steep inside the table (spring slope %.3g >= 8 of "
+                              "Q3.28, in max|g| per spring, at x = %.3g m: a rim or kink); fewer --springs (%u)",
+                              smax, (double)tab->h * (double)imax, n);
+        }
         return usage_errf("q31 table: the profile is too steep inside the table (spring slope %.3g >= 8 of Q3.28, "
                           "in max|g| per spring, at x = %.3g m: a rim or kink); fewer --springs (%u) or a higher "
                           "--a-max (%.9g m)",

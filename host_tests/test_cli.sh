@@ -177,6 +177,12 @@ for ctl in load grips; do
     near "$(key "$out" d)" "$(awk 'BEGIN { b = 2.4e-6; printf "%.17g", -sqrt(2 * 3.14159265358979324 * b * 0.05 / 1e6) }')" 1e-9 &&
         ok || bad "worn tip: Kendall d at a = b ($ctl): $out"
 done
+# a sampled worn tip too steep at its rim for a q31 table of 8 192 springs:
+# the remedy named is fewer springs alone (its extent is the last sample;
+# helper-64, stop 70: "or a higher --a-max", which is refused)
+awk 'BEGIN { print "r,f"; b = 1.5e-6; for (i = 0; i <= 800; i++) { r = 1e-8 * i; printf "%.17g,%.17g\n", r, (r < b ? 0 : (r * r - b * b) / 20e-6) } }' >"$TMP/worn8.csv"
+refuse '^mdr: q31 table: the profile is too steep inside the table \(spring slope [0-9.]+ >= 8 of Q3.28, in max\|g\| per spring, at x = 1.5e-06 m: a rim or kink\); fewer --springs \(8192\)$' \
+    cycle --profile table --file "$TMP/worn8.csv" --E 1e6 --w 0.05 --control grips --path 0,3e-7,-2e-6 --steps-per-segment 10 --springs 8192 --arith q31
 $MDR table --profile table --file "$TMP/tip.csv" --springs 16 --name my_tip >"$TMP/t.c" || bad "table exit"
 grep -q '^const mdr_table_f32 my_tip = {my_tip_nodes, ' "$TMP/t.c" && ok || bad "table C output"
 [ "$(grep -c '^    {' "$TMP/t.c")" -eq 19 ] && ok || bad "table: 17 nodes and 2 of block bounds for 16 springs"

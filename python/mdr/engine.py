@@ -119,10 +119,21 @@ class Engine:
         self.a_max = float(r[-1]) if r.size else None
         self._x = ffi.new("mdrpy_engine *")
         nodes = self._alloc()
-        check(lib.mdrpy_engine_tip(self._x, self._arith, dptr(r), dptr(f), r.size, self.E, self.w, self.w_adv,
-                                   self.k_machine, self.springs, *nodes),
-              "%s(%d points, springs=%d, arith=%r)" % (what, r.size, self.springs, self.arith))
+        st = lib.mdrpy_engine_tip(self._x, self._arith, dptr(r), dptr(f), r.size, self.E, self.w, self.w_adv,
+                                  self.k_machine, self.springs, *nodes)
+        check(st, "%s(%d points, springs=%d, arith=%r)%s" % (what, r.size, self.springs, self.arith,
+                                                               self._q31_hint(st, "fewer springs")))
         self._nodes = nodes
+
+    def _q31_hint(self, st, steep):
+        """What a q31 table's MDR_E_OVERFLOW can mean, as `mdr cycle --arith
+        q31` names it (helper-64, stop 70: a bare status before): a spring
+        too steep for Q3.28 (a rim or kink: `steep`), too few springs for the
+        profile's curvature, or a depth beyond float's range."""
+        if self.arith != "q31" or st != lib.MDR_E_OVERFLOW:
+            return ""
+        return (": the q31 table cannot hold the profile (a spring too steep for Q3.28 at a rim or kink: %s; "
+                "too few springs for its curvature: more springs; `mdr cycle --arith q31` names which)" % steep)
 
     def _setup(self, E, w, springs, w_adv, k_machine, arith):
         if arith not in ARITHS:

@@ -427,6 +427,19 @@ def test_engine_settings_are_numbers():
             mdr.Engine.from_tip(r, r**2 / 2e-5, **kw)
 
 
+def test_q31_tip_too_steep_named():
+    """A sampled worn tip (flat to 1.5 um, R 10 um) too steep at its rim for a
+    q31 table of 8 192 springs: mdr.Error MDR_E_OVERFLOW that says what it
+    can mean and what helps (a bare status before; helper-64, stop 70); 1 024
+    springs take it."""
+    r = np.arange(801) * 1e-8
+    f = np.where(r < 1.5e-6, 0.0, (r * r - 1.5e-6**2) / 20e-6)
+    with pytest.raises(mdr.Error, match=r"q31 table cannot hold the profile .*fewer springs") as e:
+        mdr.Engine.from_tip(r, f, E=1e6, w=0.05, springs=8192, arith="q31")
+    assert e.value.status == "MDR_E_OVERFLOW"
+    mdr.Engine.from_tip(r, f, E=1e6, w=0.05, springs=1024, arith="q31")
+
+
 def test_tip_samples_real_and_unmasked():
     """Sampled tips take real numbers only, none masked (a masked outlier was
     read under its mask: the pull-off 6 000 times off; bool gaps as 0/1 m;
