@@ -419,25 +419,21 @@ static void json_str(cli_json *j, const char *key, const char *v)
     json_strv(j->fp, v);
 }
 
-/* The fewest springs per wavelength at which a wavy profile's table
- * resolves its waves (docs/engine.md): with fewer, `cycle`
- * and `table` say so (the summary's "warnings"; helper-63, stop 70: 6.4
- * springs per wavelength put an approach fold 8 % below the profile's, 0.9
- * reported 56 of 198 jumps and a pull-off 4 % off, exit 0 and silent). */
-#define CLI_WAVY_SPW 8.0
-
-/* The warning of a table of spring width h [m] for profile A: a wavy
- * profile's springs per wavelength below CLI_WAVY_SPW, written into buf
- * (empty: none). */
+/* The warning of a table of spring width h [m] for profile A, written into
+ * buf (empty: none): a wavy profile's springs per wavelength below
+ * MDR_WAVY_SPRINGS_PER_WAVELENGTH, which `cycle` (the summary's
+ * "warnings") and `table` report (helper-63, stop 70: 6.4 springs per
+ * wavelength put an approach fold 8 % below the profile's, 0.9 reported 56
+ * of 198 jumps and a pull-off 4 % off, exit 0 and silent). */
 static void table_warning(const struct cli_args *A, double h, char *buf, size_t len)
 {
-    const double spw = A->kind == MDR_PROFILE_WAVY && h > 0 ? A->p[2] / h : CLI_WAVY_SPW;
+    const double spw = A->kind == MDR_PROFILE_WAVY && h > 0 ? A->p[2] / h : MDR_WAVY_SPRINGS_PER_WAVELENGTH;
     buf[0] = '\0';
-    if (spw < CLI_WAVY_SPW) {
+    if (spw < MDR_WAVY_SPRINGS_PER_WAVELENGTH) {
         (void)snprintf(buf, len,
-                       "%.3g springs per wavelength (--lambda %.9g m, spring width %.9g m): below %g the waves "
+                       "%.3g springs per wavelength (--lambda %.9g m, spring width %.9g m): below %d the waves "
                        "are not resolved; more --springs or a lower --a-max",
-                       spw, A->p[2], h, CLI_WAVY_SPW);
+                       spw, A->p[2], h, MDR_WAVY_SPRINGS_PER_WAVELENGTH);
     }
 }
 

@@ -189,15 +189,13 @@ static int CLI_SFX(q31_table_fail)(const struct cli_args *A, const CLI_SFX(mdr_t
         /* (a sampled tip's table ends at its last sample: only fewer
          * springs help there; helper-64, stop 70: the message offered a
          * higher --a-max, which that profile refuses) */
-        if (A->kind == KIND_TABLE) {
-            return usage_errf("q31 table: the profile is too steep inside the table (spring slope %.3g >= 8 of "
-                              "Q3.28, in max|g| per spring, at x = %.3g m: a rim or kink); fewer --springs (%u)",
-                              smax, (double)tab->h * (double)imax, n);
+        char higher[64] = "";
+        if (A->kind != KIND_TABLE) {
+            (void)snprintf(higher, sizeof higher, " or a higher --a-max (%.9g m)", L);
         }
         return usage_errf("q31 table: the profile is too steep inside the table (spring slope %.3g >= 8 of Q3.28, "
-                          "in max|g| per spring, at x = %.3g m: a rim or kink); fewer --springs (%u) or a higher "
-                          "--a-max (%.9g m)",
-                          smax, (double)tab->h * (double)imax, n, L);
+                          "in max|g| per spring, at x = %.3g m: a rim or kink); fewer --springs (%u)%s",
+                          smax, (double)tab->h * (double)imax, n, higher);
     }
     if (smax / 8.0 >= bmax / 2.0 && smax >= 7.99) {
         return usage_errf("q31 table: the profile is too steep over the table (spring slope %.3g >= 8 of "

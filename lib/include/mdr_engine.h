@@ -21,6 +21,11 @@
  *  in uint16_t and the node abscissae i*h exact to an ulp. */
 #define MDR_SPRINGS_MIN 2
 #define MDR_SPRINGS_MAX 16384
+/** The fewest springs per wavelength at which a table of the wavy profile
+ *  (MDR_PROFILE_WAVY) resolves its waves (docs/engine.md): with fewer its
+ *  folds and jumps are the table's, not the profile's (the CLI's and the
+ *  Python package's warnings). */
+#define MDR_WAVY_SPRINGS_PER_WAVELENGTH 8
 /** Springs per block of a table: after its n+1 nodes a table stores, per
  *  block of MDR_TABLE_BLOCK springs, bounds of g, G and g' over the block
  *  (two nodes each), so that the engine passes a block in one comparison

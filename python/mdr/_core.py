@@ -31,11 +31,6 @@ class ResolutionWarning(UserWarning):
     resolve the waves."""
 
 
-#: the fewest springs per wavelength at which a wavy profile's table
-#: resolves its waves (examples/mdr_cli.c, CLI_WAVY_SPW)
-WAVY_SPRINGS_PER_WAVELENGTH = 8.0
-
-
 class Error(ValueError):
     """A refusal of libmdr.
 

@@ -10,7 +10,7 @@ import warnings
 
 import numpy as np
 
-from ._core import ARITHS, WAVY_SPRINGS_PER_WAVELENGTH, Error, ResolutionWarning, check, control_code, dptr, event_name, f32_shape, ffi, lib, narrow, real_array
+from ._core import ARITHS, Error, ResolutionWarning, check, control_code, dptr, event_name, f32_shape, ffi, lib, narrow, real_array
 from .contact import Contact
 
 #: one event of a run (MDR_EV_*): kind ("contact", "jump-in", "jump",
@@ -122,18 +122,19 @@ class Engine:
         st = lib.mdrpy_engine_tip(self._x, self._arith, dptr(r), dptr(f), r.size, self.E, self.w, self.w_adv,
                                   self.k_machine, self.springs, *nodes)
         check(st, "%s(%d points, springs=%d, arith=%r)%s" % (what, r.size, self.springs, self.arith,
-                                                               self._q31_hint(st, "fewer springs")))
+                                                               self._q31_tip_hint(st)))
         self._nodes = nodes
 
-    def _q31_hint(self, st, steep):
-        """What a q31 table's MDR_E_OVERFLOW can mean, as `mdr cycle --arith
-        q31` names it (helper-64, stop 70: a bare status before): a spring
-        too steep for Q3.28 (a rim or kink: `steep`), too few springs for the
-        profile's curvature, or a depth beyond float's range."""
+    def _q31_tip_hint(self, st):
+        """What a sampled tip's q31 MDR_E_OVERFLOW can mean, as `mdr cycle
+        --arith q31` names it (helper-64, stop 70: a bare status before): a
+        spring too steep for Q3.28 at a rim or kink (the table ends at the
+        last sample: fewer springs), or too few springs for the profile's
+        curvature."""
         if self.arith != "q31" or st != lib.MDR_E_OVERFLOW:
             return ""
-        return (": the q31 table cannot hold the profile (a spring too steep for Q3.28 at a rim or kink: %s; "
-                "too few springs for its curvature: more springs; `mdr cycle --arith q31` names which)" % steep)
+        return (": the q31 table cannot hold the profile (a spring too steep for Q3.28 at a rim or kink: fewer "
+                "springs; too few springs for its curvature: more springs; `mdr cycle --arith q31` names which)")
 
     def _setup(self, E, w, springs, w_adv, k_machine, arith):
         if arith not in ARITHS:
@@ -184,11 +185,11 @@ class Engine:
         self._x, self._nodes, self.a_max = x, nodes, a_max
         if c.profile == "wavy":
             spw = c.params["lam"] * self.springs / a_max
-            if spw < WAVY_SPRINGS_PER_WAVELENGTH:
+            if spw < lib.MDR_WAVY_SPRINGS_PER_WAVELENGTH:
                 warnings.warn(ResolutionWarning(
                     "Engine(%r, springs=%d, a_max=%.9g): %.3g springs per wavelength (lam %.9g m): below %g the "
                     "waves are not resolved; more springs or a lower a_max" % (
-                        c.profile, self.springs, a_max, spw, c.params["lam"], WAVY_SPRINGS_PER_WAVELENGTH)),
+                        c.profile, self.springs, a_max, spw, c.params["lam"], lib.MDR_WAVY_SPRINGS_PER_WAVELENGTH)),
                     stacklevel=3)
 
     def _info(self):
