@@ -14,6 +14,9 @@
  *   literature values: REL64 = 5e-15 (f64) against closed forms, REL_CV = 1e-11
  *     against the 12-digit tables of CHECK_VALUES.md, REL32 = 2e-6 (f32), relative;
  *     depths relative to max(|d|, dl(a));
+ *   stress against closed forms (4.42, the flat punch, the power law on its
+ *     axis, the cone where a/r passes the range, the flattened tip's flat
+ *     with a up to 1e4 b): 4e-15 to 1e-12 (f64), 2e-6 (f32) of its terms;
  *   round trips: K_I(a, d(a)) = sqrt(2 E* w) to 1e-12 (f64) / 2e-5 (f32:
  *     g - d cancels up to a factor g/dl = 30 at the largest radius);
  *     F = 2E*(a d - G) from mdr_profile_eval to 1e-12 / 1e-5 of the scale 2E* a g.
@@ -591,6 +594,82 @@ static void stress_paraboloid_4_42(void **st)
     }
 }
 
+/* The power law's stress on the axis: 4.27 at r = 0 with g = kappa_n C x^n,
+ *   sigma(0) = (E* / pi) (dl/a - n kappa_n C a^(n-1)/(n - 1)),
+ * dl = sqrt(2 pi a w/E*) at equilibrium, kappa_n = sqrt(pi) Gamma(n/2 + 1)/
+ * Gamma((n + 1)/2) from libm's tgamma here; n from 1 + 1e-6 (the integral of
+ * x^(n-2) spread over many decades toward the axis) to 8, four radii; f32
+ * against the same formula at its inputs rounded to float (n = 1 + 1e-6
+ * rounds to 1 + 9.5e-7). Relative to the two terms' sizes: 1e-12 (f64), 2e-6
+ * (f32) [measured 8.3e-16, 2.9e-7]. Found by helper-65 (stop 71): one quadrature panel over [0, a] was
+ * 6.5 % off at n = 1.05, 34 % at 1.02, all of it at 1 + 1e-6, exit 0. */
+static double powerlaw_axis_sigma(double C, double n, double E, double w, double a, double *scale)
+{
+    const double kap = sqrt(M_PI) * tgamma(0.5 * n + 1) / tgamma(0.5 * (n + 1));
+    const double adh = sqrt(2 * M_PI * w / (E * a)), sh = n * kap * C * pow(a, n - 1) / (n - 1);
+    *scale = E / M_PI * (adh + sh);
+    return E / M_PI * (adh - sh);
+}
+
+static void stress_powerlaw_axis(void **st)
+{
+    static const double ns[] = {1.000001, 1.001, 1.02, 1.05, 1.1, 1.2, 1.5, 2.0, 3.0, 5.0, 8.0};
+    const double L = 1e-3, E = 1e9, w = 0.05;
+    size_t i;
+    (void)st;
+    for (i = 0; i < sizeof ns / sizeof ns[0]; i++) {
+        const double n = ns[i], C = 1e-4 / pow(L, n);
+        const mdr_contact_f64 c = mk64(MDR_PROFILE_POWERLAW, C, n, 0, E, w);
+        const mdr_contact_f32 cf = mk32(MDR_PROFILE_POWERLAW, C, n, 0, E, w);
+        for (double a = 1e-2 * L; a < 6 * L; a *= 5.5) {
+            double sig, want, scale;
+            float sf;
+            want = powerlaw_axis_sigma(C, n, E, w, a, &scale);
+            assert_int_equal(mdr_stress_f64(&c, a, 0, &sig), MDR_OK);
+            rel_le(sig, want, scale, 1e-12, "power law sigma(0)");
+            want = powerlaw_axis_sigma((float)C, (float)n, (float)E, (float)w, (float)a, &scale);
+            assert_int_equal(mdr_stress_f32(&cf, (float)a, 0.0f, &sf), MDR_OK);
+            rel_le(sf, want, scale, 2e-6, "power law sigma(0), f32");
+        }
+    }
+}
+
+/* The cone's stress where a/r passes the range (a/r beyond DBL_MAX/2, f32
+ * FLT_MAX/2): 4.27 with g = k0 x, k0 = (pi/2) tan(theta) (4.55),
+ *   sigma(r) = (E* / pi) (dl/sqrt(a^2 - r^2) - k0 acosh(a/r)),
+ * acosh(a/r) here as log a - log r + log(1 + sqrt(1 - (r/a)^2)) (libm);
+ * 1e-13 (f64), 2e-6 (f32) of the two terms' sizes [measured 3.1e-16,
+ * 8.6e-8], at r below and above the range's end. Found by helper-65 (stop 71): +1.78 Pa for
+ * -1.94e8 (the log of an infinite quotient taken as 0). */
+static double cone_sigma(double theta, double E, double w, double a, double r, double *scale)
+{
+    const double k0 = 0.5 * M_PI * tan(theta), t = r / a;
+    const double adh = sqrt(2 * M_PI * a * w / E) / sqrt((a - r) * (a + r));
+    const double ac = (log(a) - log(r)) + log(1 + sqrt((1 - t) * (1 + t)));
+    *scale = E / M_PI * (adh + k0 * ac);
+    return E / M_PI * (adh - k0 * ac);
+}
+
+static void stress_cone_far_from_the_edge(void **st)
+{
+    const double theta = 0.5, E = 1e6, w = 0.05;
+    const mdr_contact_f64 c = mk64(MDR_PROFILE_CONE, theta, 0, 0, E, w);
+    const mdr_contact_f32 cf = mk32(MDR_PROFILE_CONE, theta, 0, 0, E, w);
+    double sig, want, scale;
+    (void)st;
+    for (double r = 1e-306; r < 1e-302; r *= 3.1) {
+        want = cone_sigma(theta, E, w, 1e4, r, &scale);
+        assert_int_equal(mdr_stress_f64(&c, 1e4, r, &sig), MDR_OK);
+        rel_le(sig, want, scale, 1e-13, "cone sigma, a/r beyond the range");
+    }
+    for (double r = 1e-38; r < 1e-36; r *= 3.1) {
+        float sf;
+        want = cone_sigma((float)theta, (float)E, (float)w, 3.0, (float)r, &scale);
+        assert_int_equal(mdr_stress_f32(&cf, 3.0f, (float)r, &sf), MDR_OK);
+        rel_le(sf, want, scale, 2e-6, "cone sigma, a/r beyond the range, f32");
+    }
+}
+
 /* A flattened tip in contact on its flat only (a <= b) is a flat punch of
  * radius a: sigma = -E* d/(pi sqrt(a^2 - r^2)) (4.27 with g = 0 on [0, a]).
  * Found by make stress: every a < b returned MDR_E_OVERFLOW. */
@@ -610,6 +689,60 @@ static void stress_flat_tip_on_the_flat(void **st)
             rel_le(sig, want, 0, 5e-15, "flat tip, a <= b");
             assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)(s * a), &sf), MDR_OK);
             rel_le(sf, want, 0, 2e-6, "flat tip, a <= b, f32");
+        }
+    }
+}
+
+/* The flattened tip's stress on its flat (r < b) with the contact far
+ * beyond the flat (a up to 1e4 b): 4.27 at equilibrium,
+ *   sigma = (E* / pi) (dl/sqrt(a^2 - r^2) - S), dl = sqrt(2 pi a w/E*),
+ * S = int_b^a g'(x)/sqrt(x^2 - r^2) dx with g' = (2x^2 - b^2)/(R sqrt(x^2 -
+ * b^2)); with x = b cosh t, S = (b^2/R) int_0^T (2 cosh^2 t - 1)/
+ * sqrt(b^2 cosh^2 t - r^2) dt, T = acosh(a/b): on the axis
+ * (2 sqrt(a^2 - b^2) - b atan(sqrt(a^2 - b^2)/b))/R, elsewhere by Simpson's
+ * rule in long double (4 000 intervals; a substitution the library does not
+ * use). 1e-12 (f64) and 2e-6 (f32, at its inputs rounded to float) of the
+ * two terms' sizes [measured 2.1e-13, 1.3e-7]. Found by helper-65 (stop 71): one quadrature panel
+ * over the flat's substitution was 1.2e-8 off at a = 100 b. */
+static double flattip_flat_sigma(double R, double b, double E, double w, double a, double r, double *scale)
+{
+    const double dl = sqrt(2 * M_PI * a * w / E), T = acosh(a / b);
+    double S;
+    if (r == 0) {
+        const double v = sqrt((a - b) * (a + b));
+        S = (2 * v - b * atan(v / b)) / R;
+    } else {
+        const int n = 4000;
+        long double sum = 0, h = (long double)T / n;
+        for (int i = 0; i <= n; i++) {
+            const long double ch = coshl(h * i), f = (2 * ch * ch - 1) / sqrtl(b * b * ch * ch - (long double)r * r);
+            sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * f;
+        }
+        S = (double)(sum * h / 3 * b * b / R);
+    }
+    *scale = E / M_PI * (dl / sqrt((a - r) * (a + r)) + S);
+    return E / M_PI * (dl / sqrt((a - r) * (a + r)) - S);
+}
+
+static void stress_flat_tip_far_beyond_the_flat(void **st)
+{
+    const double R = 1e-6, b = 1e-8, E = 1e9, w = 0.05;
+    static const double ab[] = {1.01, 3, 10, 30, 100, 1000, 1e4}, rb[] = {0, 0.5, 0.9};
+    const mdr_contact_f64 c = mk64(MDR_PROFILE_FLATTIP, R, b, 0, E, w);
+    const mdr_contact_f32 cf = mk32(MDR_PROFILE_FLATTIP, R, b, 0, E, w);
+    size_t i, j;
+    (void)st;
+    for (i = 0; i < sizeof ab / sizeof ab[0]; i++) {
+        for (j = 0; j < sizeof rb / sizeof rb[0]; j++) {
+            const double a = ab[i] * b, r = rb[j] * b;
+            double sig, want, scale;
+            float sf;
+            want = flattip_flat_sigma(R, b, E, w, a, r, &scale);
+            assert_int_equal(mdr_stress_f64(&c, a, r, &sig), MDR_OK);
+            rel_le(sig, want, scale, 1e-12, "flattened tip, sigma on the flat, a >> b");
+            want = flattip_flat_sigma((float)R, (float)b, (float)E, (float)w, (float)a, (float)r, &scale);
+            assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)r, &sf), MDR_OK);
+            rel_le(sf, want, scale, 2e-6, "flattened tip, sigma on the flat, a >> b, f32");
         }
     }
 }
@@ -882,6 +1015,9 @@ int main(void)
         cmocka_unit_test(round_trips),
         cmocka_unit_test(stress_paraboloid_4_42),
         cmocka_unit_test(stress_flat_tip_on_the_flat),
+        cmocka_unit_test(stress_powerlaw_axis),
+        cmocka_unit_test(stress_cone_far_from_the_edge),
+        cmocka_unit_test(stress_flat_tip_far_beyond_the_flat),
         cmocka_unit_test(wavy_phase_of_many_wavelengths),
         cmocka_unit_test(machine_limits),
         cmocka_unit_test(init_errors),
