@@ -78,7 +78,7 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
             /* which argument: the profile's with a valid material (E* = 1,
              * w = 0), then E* alone (w = 0): its flags, --E or --w */
             CLI_SFX(mdr_contact) t;
-            char what[80];
+            char what[160];
             if (CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)1, (CLI_T)0) != MDR_OK) {
                 int k;
                 (void)snprintf(what, sizeof what, "profile %s (", profiles[A->pi].name);
@@ -86,7 +86,11 @@ static int CLI_SFX(make_contact)(const struct cli_args *A, CLI_SFX(mdr_contact) 
                     (void)snprintf(what + strlen(what), sizeof what - strlen(what), "%s%s", k > 0 ? ", " : "",
                                    profiles[A->pi].flags[k]);
                 }
-                (void)snprintf(what + strlen(what), sizeof what - strlen(what), ")");
+                /* (the rule; a value inside it whose coefficients pass the
+                 * arithmetic's range, a cone of theta next to pi/2, is
+                 * refused all the same) */
+                (void)snprintf(what + strlen(what), sizeof what - strlen(what), "; %s, finite in this arithmetic)",
+                               profiles[A->pi].range);
             } else if (CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)A->E, (CLI_T)0) != MDR_OK) {
                 (void)snprintf(what, sizeof what, "--E");
             } else if (CLI_SFX(mdr_contact_init)(&t, A->kind, p, (CLI_T)1, (CLI_T)A->w) != MDR_OK) {
@@ -723,10 +727,10 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
             if (x32 != NULL) {
                 /* f32's own error beyond its goal (a coarse table near its
                  * axis): mdr_host_f32_eq_pair_err */
-                const double dv[2] = {(double)e.dd_da, (double)e.dF_da}; /* (printed too) */
+                const double dv[2] = {(double)e.dd_da, (double)e.dF_da}, Kd = (double)K; /* (printed too) */
                 int q = 0;
-                const double er =
-                    mdr_host_f32_eq_pair_err(x32, A->a, A->have_d ? &A->d : NULL, (double)d, (double)F, dv, &q);
+                const double er = mdr_host_f32_eq_pair_err(x32, A->a, A->have_d ? &A->d : NULL, (double)d, (double)F,
+                                                           dv, A->have_d ? &Kd : NULL, &q);
                 if (er > mdr_host_f32_max(q)) {
                     return CLI_SFX(f32_wrong)("--a", A->a, er, "", q);
                 }
@@ -785,7 +789,7 @@ static int CLI_SFX(contact_cmd_x)(const struct cli_args *A, const CLI_SFX(mdr_co
                 if (f32chk && pass == 0) {
                     /* (its rows print a, d, F: no derivatives) */
                     const double er = mdr_host_f32_eq_pair_err(x32, A->a_max * (double)i / (double)A->n, NULL,
-                                                               (double)e.d, (double)e.F, NULL, NULL);
+                                                               (double)e.d, (double)e.F, NULL, NULL, NULL);
                     if (er > MDR_HOST_F32_ANSWER_MAX) {
                         char row[64];
                         (void)snprintf(row, sizeof row, ", its row %ld (a = %.9g)", i, (double)a);

@@ -284,26 +284,47 @@ static inline int mdr_host_f32_eq_pair_init_tip(mdr_host_f32_eq_pair *x, const d
 #define MDR_HOST_F32_SLOPE_MAX 5e-5
 
 /* the tolerance of mdr_host_f32_eq_pair_check()'s quantity k (0 d, 1 F,
- * 2 dd/da, 3 dF/da) */
+ * 2 dd/da, 3 dF/da, 4 a state's K_I) */
 static inline double mdr_host_f32_max(int k)
 {
-    return k >= 2 ? MDR_HOST_F32_SLOPE_MAX : MDR_HOST_F32_ANSWER_MAX;
+    return k == 2 || k == 3 ? MDR_HOST_F32_SLOPE_MAX : MDR_HOST_F32_ANSWER_MAX;
+}
+
+/* How far an f32 K_I of the state (a, d) lies from f64's at the values
+ * given, relative to the larger of |K_I| and the critical value
+ * sqrt(2 E* w) it is compared with (G_rel = K_I^2/(2E*) then within twice
+ * that of w): K_I = E* (g(a) - d)/sqrt(pi a) of a pinned state is a
+ * difference of g(a) and d, which float keeps to eps g(a): where g(a) is
+ * far above g(a) - d f32 prints nothing of it (helper-65, stop 71: R 1 cm,
+ * E* 1e12, a 9 mm, a state 2e-10 m inside its equilibrium: K_I 0 and G_rel
+ * 0 for 1218.5 and 0.742 w, exit 0; R 100 um, E* 100 GPa, a 90 um: 4.6e-5
+ * of sqrt(2 E* w) off). 0 where f64 refuses the state. */
+static inline double mdr_host_f32_K_err(const mdr_contact_f64 *c, double a, double d, double K32)
+{
+    double K64, sc;
+    if (mdr_stress_intensity_f64(c, a, d, &K64, NULL) != MDR_OK) {
+        return 0.0;
+    }
+    sc = sqrt(2.0 * c->E * c->w);
+    sc = fabs(K64) > sc ? fabs(K64) : sc;
+    return fabs(K32 - K64) / sc;
 }
 
 /* Both f32 checks of an equilibrium (or the state (a, *d)) through the
  * pair x, from one f64 state at the values given: *change (not NULL) the
  * rounding's (mdr_host_f32_eq_pair_change(): against the f64 state at the
  * roundings; DBL_MAX where f64 refuses those), *err (with ans, the f32
- * answer d32, F32, and with dv also its equilibrium's dd/da, dF/da) the
+ * answer d32, F32, and with dv also its equilibrium's dd/da, dF/da, with
+ * K (a state's, d not NULL) its K_I, mdr_host_f32_K_err()) the
  * answer's (mdr_host_f32_eq_pair_err(); *which, not NULL: the quantity
- * furthest beyond its tolerance, 0 d, 1 F, 2 dd/da, 3 dF/da: *err is its
+ * furthest beyond its tolerance, 0 d, 1 F, 2 dd/da, 3 dF/da, 4 K_I: *err is its
  * error, refused beyond mdr_host_f32_max(*which)); each 0 where a, d are beyond
  * float or f64 refuses the values given (the f32 call names those). The
  * Python package's f32 Contact.eq takes both in one call per point
  * (mdrpy_f32_eq_check). */
 static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, double a, const double *d,
-                                              double *change, const double ans[2], const double *dv, double *err,
-                                              int *which)
+                                              double *change, const double ans[2], const double *dv,
+                                              const double *K, double *err, int *which)
 {
     double v[8];
     if (change != NULL) {
@@ -325,6 +346,13 @@ static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, dou
             if (k == 0 || e / mdr_host_f32_max(k) > *err / mdr_host_f32_max(best)) {
                 *err = e;
                 best = k;
+            }
+        }
+        if (K != NULL && d != NULL) {
+            const double e = mdr_host_f32_K_err(&x->c, a, *d, *K);
+            if (e / mdr_host_f32_max(4) > *err / mdr_host_f32_max(best)) {
+                *err = e;
+                best = 4;
             }
         }
         if (which != NULL) {
@@ -357,11 +385,11 @@ static inline void mdr_host_f32_eq_pair_check(const mdr_host_f32_eq_pair *x, dou
  * Contact.eq refuse an error beyond MDR_HOST_F32_ANSWER_MAX. 0 where f64
  * refuses the values given (the f32 call names those). */
 static inline double mdr_host_f32_eq_pair_err(const mdr_host_f32_eq_pair *x, double a, const double *d, double d32,
-                                              double F32, const double *dv, int *which)
+                                              double F32, const double *dv, const double *K, int *which)
 {
     const double ans[2] = {d32, F32};
     double er;
-    mdr_host_f32_eq_pair_check(x, a, d, NULL, ans, dv, &er, which);
+    mdr_host_f32_eq_pair_check(x, a, d, NULL, ans, dv, K, &er, which);
     return er;
 }
 
@@ -369,7 +397,7 @@ static inline double mdr_host_f32_eq_pair_err(const mdr_host_f32_eq_pair *x, dou
  * state's d and F are "answer", as before the derivatives were checked */
 static inline const char *mdr_host_f32_which(int which)
 {
-    return which == 2 ? "dd_da" : which == 3 ? "dF_da" : "answer";
+    return which == 2 ? "dd_da" : which == 3 ? "dF_da" : which == 4 ? "K_I" : "answer";
 }
 
 /* (mdr_host_f32_stress_err on the f64 contact c of modulus E, below) */
@@ -483,7 +511,7 @@ static inline double mdr_host_f32_crit_stress_err(const mdr_host_f32_eq_pair *x,
 static inline double mdr_host_f32_eq_pair_change(const mdr_host_f32_eq_pair *x, double a, const double *d)
 {
     double ch;
-    mdr_host_f32_eq_pair_check(x, a, d, &ch, NULL, NULL, NULL, NULL);
+    mdr_host_f32_eq_pair_check(x, a, d, &ch, NULL, NULL, NULL, NULL, NULL);
     return ch;
 }
 

@@ -165,6 +165,22 @@ r=$($MDR eq --profile table --file "$TMP/ex5.csv" --E 1e11 --w 0.05 --a 9.894698
 r=$($MDR curve --profile table --file "$TMP/ex5.csv" --E 1e11 --w 0.05 --a-max 9.894698514150175e-06 --n 1 2>&1)
 [ $? -eq 2 ] && printf '%s' "$r" | grep -q "^mdr: --a-max 9.89469851415017e-06, its row 1 (a = [0-9.e-]*): f32's answer is" &&
     ok || bad "coarse table near its axis, curve in f32: $r"
+# a state's K_I (eq --d) is checked too (helper-65, stop 71): K_I =
+# E* (g(a) - d)/sqrt(pi a) is a difference that float keeps to eps g(a); R
+# 1 cm, E* 1e12, a 9 mm, the state 2e-10 m inside its equilibrium, every
+# input a float: f32 printed K_I 0 and G_rel 0 (f64 1218.5 and 0.742 w) with
+# exit 0. Now refused beyond 2e-6 of the larger of |K_I| and sqrt(2 E* w);
+# an AFM tip's pinned states (g/dl about 1) are answered within it
+refuse "^mdr: --a 0.00899999961256981: f32's K_I is 0.86 off f64's at the values given \(more than 2e-06\): --arith f64$" \
+    eq --profile paraboloid --R 0.009999999776482582 --E 999999995904 --w 9.999999974752427e-07 \
+    --a 0.008999999612569809 --d 0.008099999278783798 --arith f32
+for d in -1e-9 0.5e-9 1.2e-9; do
+    o=$($MDR eq --profile paraboloid --R 20e-9 --E 1e9 --w 0.05 --a 5e-9 --d $d --arith f32) &&
+        f=$($MDR eq --profile paraboloid --R 20e-9 --E 1e9 --w 0.05 --a 5e-9 --d $d --arith f64) &&
+        /usr/bin/python3 -c 'import json, sys; a, b = json.loads(sys.argv[1]), json.loads(sys.argv[2])
+sys.exit(0 if abs(a["K_I"] - b["K_I"]) <= 2e-6 * max(abs(b["K_I"]), 1e4) else 1)' "$o" "$f" &&
+        ok || bad "AFM pinned state d = $d, K_I in f32: $o / $f"
+done
 nacc=0
 nref=0
 for i in $(seq 0 30); do

@@ -129,7 +129,8 @@ double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, co
                             double Fm32);
 size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
                           double w, size_t n, const double *a, const double *d, size_t k, const double *d32,
-                          const double *F32, const double *dd32, const double *dF32, int *what, double *value);
+                          const double *F32, const double *dd32, const double *dF32, const double *K32, int *what,
+                          double *value);
 size_t mdrpy_f32_stress_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m,
                               double E, double w, size_t n, const double *a, const double *d, const double *rr,
                               const double *s32, double *err);

@@ -139,7 +139,7 @@ def _f32_head(contact, k, a, d):
     return f32_contact_args(contact) + (k, dptr(a), dptr(d) if d is not None else ffi.NULL)
 
 
-def f32_eq_check(contact, flat, k, d32, F32, dd32=None, dF32=None):
+def f32_eq_check(contact, flat, k, d32, F32, dd32=None, dF32=None, K32=None):
     """The CLI's two f32 checks of `mdr eq` and each row of `mdr curve` over
     the flat inputs (a, or a and d), in one C call (mdrpy_f32_eq_check: one
     pair of f64 contacts, one f64 state per point): (i, what, value) of the
@@ -151,7 +151,9 @@ def f32_eq_check(contact, flat, k, d32, F32, dd32=None, dF32=None):
     given, more than MDR_HOST_F32_ANSWER_MAX (helper-50, stop 62: a coarse
     table near its axis answered 9.5e-6 off f64), and with dd32, dF32 (an
     equilibrium's) its dd/da and dF/da (stop 63: a quantized measured tip's
-    6.6e-6 off with d and F within 3e-7). The rounding is checked
+    6.6e-6 off with d and F within 3e-7), and with K32 (a state's) its K_I
+    (what 4, relative to the larger of |K_I| and sqrt(2 E* w): helper-65,
+    stop 71: a pinned state's K_I printed 0 for 1218.5). The rounding is checked
     up to point k (where the f32 loop refused, if it did) and refused
     first, the answers below k."""
     n = flat[0].size
@@ -162,6 +164,7 @@ def f32_eq_check(contact, flat, k, d32, F32, dd32=None, dF32=None):
                                dptr(np.ascontiguousarray(F32, dtype=np.float64)),
                                ffi.NULL if dd32 is None else dptr(np.ascontiguousarray(dd32, dtype=np.float64)),
                                ffi.NULL if dF32 is None else dptr(np.ascontiguousarray(dF32, dtype=np.float64)),
+                               ffi.NULL if K32 is None else dptr(np.ascontiguousarray(K32, dtype=np.float64)),
                                what, value)
     return (int(i), int(what[0]), float(value[0])) if i < n else None
 
@@ -206,8 +209,9 @@ def f32_range_error(what, shape, i, k, names, values):
 def f32_wrong_error(what, shape, i, err, names, values, q="answer"):
     """mdr.Error (MDR_E_PARAM, as the CLI's exit 2) for point i of f32_wrong
     or f32_eq_check; q: what is off, "answer" (d, F, a stress), "dd_da" or
-    "dF_da" (an equilibrium's derivative), as the CLI names it."""
-    mx = lib.mdrpy_f32_answer_max() if q == "answer" else lib.mdrpy_f32_slope_max()
+    "dF_da" (an equilibrium's derivative), "K_I" (a state's), as the CLI
+    names it."""
+    mx = lib.mdrpy_f32_answer_max() if q in ("answer", "K_I") else lib.mdrpy_f32_slope_max()
     return element_error(lib.MDR_E_PARAM, what, shape, i, names, values,
                          hint="f32's %s is %.2g off f64's at the values given (more than %g); use arith='f64'" % (
                              q, err, mx))

@@ -229,18 +229,19 @@ class Contact:
                 if wrong is not None:
                     raise f32_wrong_error(what, shape, wrong[0], wrong[1], names, flat)
             else:
-                dd32 = dF32 = None
+                dd32 = dF32 = K32 = None
                 if len(flat) == 1:  # (equilibria: their derivatives too, as `mdr eq` prints them)
                     d32, F32 = out[lib.MDRPY_EQ_D], out[lib.MDRPY_EQ_F]
                     dd32, dF32 = out[lib.MDRPY_EQ_DD_DA], out[lib.MDRPY_EQ_DF_DA]
                 else:  # a state: its d as the CLI reads it, in float
                     d32, F32 = flat[1].astype(np.float32).astype(np.float64), out[lib.MDRPY_ST_F]
-                refused = f32_eq_check(self, flat, k, d32, F32, dd32, dF32)
+                    K32 = out[lib.MDRPY_ST_K_I]
+                refused = f32_eq_check(self, flat, k, d32, F32, dd32, dF32, K32)
                 if refused is not None:
                     i, why, v = refused
                     if why == 0:
                         raise f32_eq_error(what, shape, i, v, names, flat)
-                    raise f32_wrong_error(what, shape, i, v, names, flat, q={2: "dd_da", 3: "dF_da"}.get(why, "answer"))
+                    raise f32_wrong_error(what, shape, i, v, names, flat, q={2: "dd_da", 3: "dF_da", 4: "K_I"}.get(why, "answer"))
         if st != lib.MDR_OK:
             raise element_error(st, what, shape, fail[0], names, flat)
         if beyond is not None:

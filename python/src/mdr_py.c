@@ -88,7 +88,8 @@ static int mdrpy_f32_inputs_exact(uint8_t kind, const double p[3], const double 
 
 size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
                           double w, size_t n, const double *a, const double *d, size_t k, const double *d32,
-                          const double *F32, const double *dd32, const double *dF32, int *what, double *value)
+                          const double *F32, const double *dd32, const double *dF32, const double *K32, int *what,
+                          double *value)
 {
     mdr_host_f32_eq_pair x;
     double *rd;
@@ -108,11 +109,12 @@ size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, cons
         double ch = 0.0, er = 0.0;
         int q = 0;
         mdr_host_f32_eq_pair_check(&x, a[i], d != NULL ? &d[i] : NULL, rounded ? &ch : NULL, ans,
-                                   dd32 != NULL ? dv : NULL, i < k ? &er : NULL, &q);
+                                   dd32 != NULL ? dv : NULL, K32 != NULL && i < k ? &K32[i] : NULL,
+                                   i < k ? &er : NULL, &q);
         if (ch > MDR_HOST_F32_EQ_MAX || er > mdr_host_f32_max(q)) {
             /* (the rounding's first, as the CLI's order; an answer's d or
              * F: 1, its dd/da 2, dF/da 3) */
-            *what = ch > MDR_HOST_F32_EQ_MAX ? 0 : q < 2 ? 1 : q;
+            *what = ch > MDR_HOST_F32_EQ_MAX ? 0 : q < 2 ? 1 : q; /* (4: a state's K_I) */
             *value = *what == 0 ? ch : er;
             break;
         }

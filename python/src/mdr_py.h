@@ -138,8 +138,10 @@ double mdrpy_f32_crit_max(void);
  *        answer d32[i], F32[i] lies more than MDR_HOST_F32_ANSWER_MAX from
  *        the f64 state at the values given, or with dd32, dF32 (the
  *        equilibria's dd/da, dF/da; NULL for states) those of f64's
- *        equilibrium (*what 1 for d or F, 2 dd/da, 3 dF/da, whichever is
- *        off most; *value the error).
+ *        equilibrium, with K32 (the states' K_I; NULL for equilibria) that
+ *        of the state, on mdr_host_f32_K_err()'s scale (*what 1 for d or
+ *        F, 2 dd/da, 3 dF/da, 4 K_I, whichever is off most; *value the
+ *        error).
  *        The contact: a sampled tip's (r not NULL: m radii r, the slopes s
  *        formed in double as mdrpy_contact_tip forms them, converted to
  *        float as `mdr eq --profile table --arith f32` converts them; the
@@ -155,7 +157,8 @@ double mdrpy_f32_crit_max(void);
  */
 size_t mdrpy_f32_eq_check(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
                           double w, size_t n, const double *a, const double *d, size_t k, const double *d32,
-                          const double *F32, const double *dd32, const double *dF32, int *what, double *value);
+                          const double *F32, const double *dd32, const double *dF32, const double *K32, int *what,
+                          double *value);
 
 /**
  * @brief The error of an f32 critical state (a32, d32, F32, the most tensile

@@ -49,6 +49,8 @@ SCENES = {
 }
 DERIV_WRONG = re.compile(r"^mdr: --a (\S+): f32's (dd_da|dF_da) is (\S+) off f64's at the values given \(more than "
                          r"5e-05\): --arith f64$")
+K_WRONG = re.compile(r"^mdr: --a (\S+): f32's K_I is (\S+) off f64's at the values given \(more than 2e-06\): "
+                     r"--arith f64$")
 REFUSED = re.compile(r"^mdr: --a (\S+): f32's rounding of the inputs to float (moves the state by (\S+) \(more than "
                      r"1\.5e-06\)|puts the state outside the profile): --arith f64$")
 
@@ -77,11 +79,15 @@ def err64(c64, a, d32, F32, d=None):
 
 
 def python_f32(c32, a, d=None):
-    """("refused", change text) or ("answer", state) of Python's f32 call."""
+    """("refused", change text), ("refused K_I", error text: a state's K_I,
+    stop 71) or ("answer", state) of Python's f32 call."""
     try:
         return "answer", c32.eq(a) if d is None else c32.eq(a, d=d)
     except mdr.Error as e:
         assert e.status == "MDR_E_PARAM" and e.index is None, str(e)
+        k = re.search(r"f32's K_I is (\S+) off f64's at the values given \(more than 2e-06\); use arith='f64'$", str(e))
+        if k and d is not None:
+            return "refused K_I", k.group(1)
         m = re.search(r"f32's rounding of the inputs to float (moves the state by (\S+) \(more than 1\.5e-06\)|"
                       r"puts the state outside the profile); use arith='f64'$", str(e))
         assert m, str(e)
@@ -221,6 +227,19 @@ def test_states_as_cli(cli, name):
             rc, _, err = run_cli(cli, ["eq"] + opts + ["--E", "1e9", "--w", "0.05", "--a", a_txt, "--d", d_txt,
                                                        "--arith", "f32"])
             kind, got = python_f32(c32, a, d)
+            if rc == 2 and K_WRONG.match(err.strip()):
+                # a state's K_I beyond 2e-6 of sqrt(2 E* w) (stop 71): both
+                # refuse it, naming the same error
+                assert kind == "refused K_I" and got == K_WRONG.match(err.strip()).group(2), (a_txt, d_txt, err, got)
+                n[kind] = n.get(kind, 0) + 1
+                continue
+            if rc == 2 and DERIV_WRONG.match(err.strip()) and kind == "refused K_I":
+                # the CLI names the quantity furthest beyond its tolerance,
+                # here the equilibrium's derivatives, which Python's State
+                # has not: Python names the state's K_I
+                kind = "K_I refused (the CLI: the derivatives)"
+                n[kind] = n.get(kind, 0) + 1
+                continue
             if rc == 2 and DERIV_WRONG.match(err.strip()):
                 # the CLI prints the equilibrium's dd/da and dF/da beside the
                 # state and checks them (stop 63); Python's State has no
@@ -243,8 +262,14 @@ def test_states_as_cli(cli, name):
             n[kind] += 1
     # (measured: sphere 50 answered, 8 refused; flattip 56, 2; of the
     # answered, the CLI refuses the equilibrium's derivatives at sphere 32,
-    # flattip 34, stop 63)
-    assert n["answer"] + n.get("answer (derivatives refused by the CLI)", 0) > 40 and n["refused"] > 0, n
+    # flattip 34, stop 63; since stop 71 a state's K_I is checked too, and
+    # Python refuses 41 of the sphere's 50 and 44 of the flattened tip's 56
+    # for it: these radii lie 1e-1 to 1e-8 from the sphere's a = R and the
+    # tip's rim, where K_I = E* (g(a) - d)/sqrt(pi a) moves with a's rounding
+    # to float far beyond 2e-6 of sqrt(2 E* w); the CLI names the same K_I
+    # error, or the derivatives' where they lie further beyond theirs)
+    assert n["answer"] + n.get("answer (derivatives refused by the CLI)", 0) + n.get("refused K_I", 0) + \
+        n.get("K_I refused (the CLI: the derivatives)", 0) > 40 and n["refused"] > 0, n
 
 
 def tip_files(tmp_path):
@@ -540,6 +565,38 @@ def test_derivatives_of_a_measured_tip(cli, tmp_path):
     with pytest.raises(mdr.Error) as ei:
         c32.eq([2e-9, 4.9017e-09])
     assert ei.value.index == 1
+
+
+def test_state_K_I_as_cli(cli):
+    """A state's K_I (Contact.eq(a, d), `mdr eq --d`) is checked too, relative
+    to the larger of |K_I| and sqrt(2 E* w) within 2e-6 (helper-65, stop
+    71): K_I = E* (g(a) - d)/sqrt(pi a) is a difference that float keeps to
+    eps g(a), and R 1 cm, E* 1e12, a 9 mm, the state 2e-10 m inside its
+    equilibrium (every input a float) printed K_I 0 and G 0 in f32 (f64
+    1218.5 and 0.742 w). Python and the CLI refuse it alike (MDR_E_PARAM,
+    the same error), an array names its element; an AFM tip's pinned states
+    are answered, the same floats as the CLI's."""
+    R, E, w, a, d = 0.009999999776482582, 999999995904.0, 9.999999974752427e-07, 0.008999999612569809, 0.008099999278783798
+    args = ["eq", "--profile", "paraboloid", "--R", repr(R), "--E", repr(E), "--w", repr(w), "--a", repr(a), "--d",
+            repr(d), "--arith", "f32"]
+    rc, _, err = run_cli(cli, args)
+    m = re.match(r"^mdr: --a \S+: f32's K_I is (\S+) off f64's at the values given \(more than 2e-06\): --arith f64$",
+                 err.strip())
+    assert rc == 2 and m, err
+    c32 = mdr.Contact("paraboloid", R=R, E=E, w=w, arith="f32")
+    with pytest.raises(mdr.Error, match="f32's K_I is %s off f64's" % re.escape(m.group(1))) as ei:
+        c32.eq(a, d=d)
+    assert ei.value.status == "MDR_E_PARAM"
+    with pytest.raises(mdr.Error) as ei:
+        c32.eq([a, a], d=[0.006, d])
+    assert ei.value.index == 1
+    c32 = mdr.Contact("paraboloid", R=20e-9, E=1e9, w=0.05, arith="f32")
+    for dv in (-1e-9, 0.5e-9, 1.2e-9):
+        rc, out, err = run_cli(cli, ["eq", "--profile", "paraboloid", "--R", "20e-9", "--E", "1e9", "--w", "0.05",
+                                     "--a", "5e-9", "--d", repr(dv), "--arith", "f32"])
+        assert rc == 0, err
+        st = c32.eq(5e-9, d=dv)
+        assert np.float32(st.K_I) == np.float32(json.loads(out)["K_I"]), (st.K_I, out)
 
 
 @pytest.mark.parametrize("args", [["eq", "--a", "1e-50"], ["eq", "--a", "1e-40"], ["eq", "--a", "1e-7", "--d", "1e-50"],
