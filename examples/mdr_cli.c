@@ -306,6 +306,11 @@ static long load_tip(const char *file, double **r, double **f, double **s, long 
             return -1;
         }
     }
+    if ((*r)[0] != 0.0) { /* (the library's MDR_E_TABLE named neither line nor rule: helper-66, stop 71) */
+        (void)usage_errf("%s:%ld: the first radius must be 0 (r = %.17g): a tip's samples start on its axis", file,
+                         (*lines)[0], (*r)[0]);
+        return -1;
+    }
     switch (tip_slopes(*r, *f, n, *s, &k)) {
     case -1:
         (void)usage_errf("%s:%ld: r must increase strictly (r = %.17g after %.17g)", file, (*lines)[k], (*r)[k],
@@ -325,15 +330,19 @@ static const struct {
     const char *name;
     uint8_t kind;
     const char *flags[3];
+    const char *range; /* what mdr_contact_init takes (named in its refusal: helper-66, stop 71) */
 } profiles[] = {
-    {"paraboloid", MDR_PROFILE_PARABOLOID, {"--R", NULL, NULL}},
-    {"cone", MDR_PROFILE_CONE, {"--theta", NULL, NULL}},
-    {"powerlaw", MDR_PROFILE_POWERLAW, {"--C", "--n", NULL}},
-    {"flatpunch", MDR_PROFILE_FLATPUNCH, {"--a0", NULL, NULL}},
-    {"sphere", MDR_PROFILE_SPHERE, {"--R", NULL, NULL}},
-    {"flattip", MDR_PROFILE_FLATTIP, {"--R", "--b", NULL}},
-    {"wavy", MDR_PROFILE_WAVY, {"--R", "--h", "--lambda"}},
+    {"paraboloid", MDR_PROFILE_PARABOLOID, {"--R", NULL, NULL}, "R > 0"},
+    {"cone", MDR_PROFILE_CONE, {"--theta", NULL, NULL}, "0 < theta < pi/2 rad"},
+    {"powerlaw", MDR_PROFILE_POWERLAW, {"--C", "--n", NULL}, "C > 0, 0 < n <= 8"},
+    {"flatpunch", MDR_PROFILE_FLATPUNCH, {"--a0", NULL, NULL}, "a0 > 0"},
+    {"sphere", MDR_PROFILE_SPHERE, {"--R", NULL, NULL}, "R > 0"},
+    {"flattip", MDR_PROFILE_FLATTIP, {"--R", "--b", NULL}, "R > 0, b >= 0"},
+    {"wavy", MDR_PROFILE_WAVY, {"--R", "--h", "--lambda"}, "R > 0, h >= 0, lambda > 0"},
 };
+#if MDR_POWERLAW_N_MAX != 8
+#error "profiles[]: the power law's range names n <= 8"
+#endif
 
 /* ---- JSON: the inputs and units every object carries -------------------- */
 

@@ -527,6 +527,12 @@ static void fit_json_end(cli_json *j, const struct fit_args *A)
  * 1 cm, far beyond a piezo's or an indenter's travel, where a curve in nm
  * spans tens to thousands */
 #define FIT_SPAN_SI 1e-2
+/* a force span above which a failed fit's hint names the units: 1 N is
+ * beyond an adhesive contact's forces at any tip or gripper scale this fit
+ * serves (a JKR pull-off 1.5 pi w R: w = 1 J/m^2 on R = 1 cm is 47 mN); nN
+ * taken for newtons gave MDR_E_DEGENERATE with a hint about the baseline's
+ * slope (helper-66, stop 71) */
+#define FIT_FSPAN_SI 1.0
 
 static double fit_span(const double *z, size_t n)
 {
@@ -603,13 +609,14 @@ static int fit_curve_cmd(const struct fit_args *A)
     if (c.res.st != MDR_OK) {
         json_str(&j, "status", fit_status_name(c.res.st));
         json_str(&j, "message", mdr_status_str(c.res.st));
-        const double span = fit_span(c.z, c.n);
+        const double span = fit_span(c.z, c.n), fspan = fit_span(c.F, c.n);
         char h[200];
-        if (span > FIT_SPAN_SI) {
+        if (span > FIT_SPAN_SI || fspan > FIT_FSPAN_SI) {
             /* (nm or um taken for metres were refused with a diagnosis of
              * the curve's shape: MDR_E_DEGENERATE, MDR_E_PINNED; helper-56) */
-            (void)snprintf(h, sizeof h, "z spans %.3g m: z and F must be in metres and newtons (SI), not nm, um "
-                                        "or nN", span);
+            (void)snprintf(h, sizeof h, "%s spans %.3g %s: z and F must be in metres and newtons (SI), not nm, um "
+                                        "or nN", span > FIT_SPAN_SI ? "z" : "F", span > FIT_SPAN_SI ? span : fspan,
+                           span > FIT_SPAN_SI ? "m" : "N");
             json_str(&j, "hint", h);
         } else if ((c.res.st == MDR_E_NOCONTACT || c.res.st == MDR_E_NOPULLOFF || c.res.st == MDR_E_FEW) &&
                    c.n > 0) {

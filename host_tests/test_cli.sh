@@ -553,6 +553,11 @@ printf 'r,f\n0,0\n1e-6,x\n' >"$TMP/bad.csv"
 refuse 'bad.csv:3: expected two numbers r f' table --profile table --file "$TMP/bad.csv" --springs 16
 printf '# a tip\n\nr\tf\n0\t0\n1e-6\t1e-9\n1e-6\t2e-9\n' >"$TMP/bad.csv"
 refuse 'bad.csv:6: r must increase strictly' table --profile table --file "$TMP/bad.csv" --springs 16
+# a first radius other than 0 is named with its line and the rule (helper-66,
+# stop 71: 'tabulated profile unusable (order, count or g(0))' before)
+printf '# shifted\nr,f\n1e-9,0\n2e-9,1e-10\n3e-9,3e-10\n' >"$TMP/bad.csv"
+refuse '^mdr: .*bad.csv:3: the first radius must be 0 \(r = 1.0000000000000001e-09\): a tip.s samples start on its axis$' \
+    eq --profile table --file "$TMP/bad.csv" --E 1e9 --w 0.05 --a 2e-9
 { printf '0,0\n'; printf '%0300d\n' 1; } >"$TMP/bad.csv"
 refuse 'bad.csv:2: line longer than 255 characters' table --profile table --file "$TMP/bad.csv" --springs 16
 printf 'r,f\n0,0\n1e-6,1e-9\0\n2e-6,4e-9\n' >"$TMP/bad.csv"
@@ -715,10 +720,16 @@ refuse '^mdr: q31 table: the profile is too steep inside the table .*at x = 5e-0
 $MDR cycle $F5 --springs 256 --arith q31 --a-max 1e-4 >/dev/null 2>&1 && ok || bad "flattened tip in q31 on 256 springs to 100 um"
 # a profile or material out of range: the line names the argument and the
 # status by name and number (it said "profile/material ... (status -3)",
-# helper-22 at stop 54)
-refuse '^mdr: profile paraboloid \(--R\): parameter out of range \(MDR_E_PARAM, status -3\)$' eq --profile paraboloid --R -10e-6 --E 1e6 --w 0.05 --a 1e-6
-refuse '^mdr: profile wavy \(--R, --h, --lambda\): parameter out of range \(MDR_E_PARAM, status -3\)$' \
+# helper-22 at stop 54), and the profile's range (helper-66, stop 71: a cone
+# of --theta 30, degrees for radians, was "parameter out of range" alone)
+refuse '^mdr: profile paraboloid \(--R; R > 0, finite in this arithmetic\): parameter out of range \(MDR_E_PARAM, status -3\)$' \
+    eq --profile paraboloid --R -10e-6 --E 1e6 --w 0.05 --a 1e-6
+refuse '^mdr: profile wavy \(--R, --h, --lambda; R > 0, h >= 0, lambda > 0, finite in this arithmetic\): parameter out of range \(MDR_E_PARAM, status -3\)$' \
     eq --profile wavy --R 1e-5 --h -1e-8 --lambda 5e-7 --E 1e6 --w 0.05 --a 1e-6
+refuse '^mdr: profile cone \(--theta; 0 < theta < pi/2 rad, finite in this arithmetic\): parameter out of range \(MDR_E_PARAM, status -3\)$' \
+    eq --profile cone --theta 30 --E 1e6 --w 0.05 --a 1e-6
+refuse '^mdr: profile powerlaw \(--C, --n; C > 0, 0 < n <= 8, finite in this arithmetic\): parameter out of range' \
+    eq --profile powerlaw --C 1 --n 9 --E 1e6 --w 0.05 --a 1e-6
 refuse '^mdr: --E: parameter out of range \(MDR_E_PARAM, status -3\)$' eq --profile paraboloid --R 10e-6 --E 0 --w 0.05 --a 1e-6
 refuse '^mdr: --w: parameter out of range \(MDR_E_PARAM, status -3\)$' critical --profile cone --theta 0.5 --E 1e6 --w -0.05 --control load
 # every status of the header has its name in the CLI's table (cli_stname)

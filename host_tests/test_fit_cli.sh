@@ -532,6 +532,12 @@ for fs in 1 1e9; do
     [ $? -eq 1 ] && echo "$nout" | grep -q '"hint": "z spans [0-9.e+]* m: z and F must be in metres' &&
         ok || bad "a curve in nm (F x $fs): the hint names the units: $nout"
 done
+# F alone in nN (helper-66, stop 71: MDR_E_DEGENERATE with the baseline
+# slope's hint): the hint names F's span
+awk -F, 'NR == 1 { print; next } { printf "%.17g,%.17g\n", $1, $2 * 1e9 }' "$TMP/c.csv" > "$TMP/nN.csv"
+nout=$("$MDR" fit --curve "$TMP/nN.csv" $TIP --k-machine 0.2)
+[ $? -eq 1 ] && echo "$nout" | grep -q '"hint": "F spans [0-9.e+]* N: z and F must be in metres and newtons' &&
+    ok || bad "a curve with F in nN: the hint names the units: $nout"
 expect2 "R < 0" "profile" fit --curve "$TMP/c.csv" --profile paraboloid --R -1 --k-machine 0.2
 expect2 "missing file" "cannot open" fit --curve "$TMP/none.csv" $TIP --k-machine 0.2
 expect2 "table without --file" "needs --file" fit --curve "$TMP/c.csv" --profile table --k-machine 0.2

@@ -11,7 +11,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_NULL: return "null pointer";
     case MDR_E_NONFINITE: return "input is NaN or infinite";
     case MDR_E_PARAM: return "parameter out of range";
-    case MDR_E_KIND: return "unknown profile kind";
+    case MDR_E_KIND: return "unknown profile kind, or one this function does not take (a scene: paraboloid, cone, power law of integer n)";
     case MDR_E_RADIUS: return "contact radius outside the profile's domain";
     case MDR_E_POSITION: return "radial position outside [0, a)";
     case MDR_E_CONTROL: return "unknown control mode, or machine stiffness not > 0 or out of range";
@@ -19,7 +19,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_SINGULAR: return "quantity is singular at this point";
     case MDR_E_OVERFLOW: return "result beyond the arithmetic's range (too large, or a table too small to keep its digits)";
     case MDR_E_OUTSIDE: return "contact edge beyond the last spring of the table";
-    case MDR_E_TABLE: return "tabulated profile unusable (order, count or g(0))";
+    case MDR_E_TABLE: return "tabulated profile unusable (r not from 0 or not increasing, too few points, or g(0) not 0)";
     case MDR_E_SIZE: return "number of springs out of range";
     case MDR_E_DISABLED: return "removed from this build (mdr_options.h)";
     case MDR_E_FEW: return "too few points in the retract or in contact";

@@ -237,8 +237,14 @@ def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach
         hint += "; the retract is the part from the largest z on: sample %d (z = %.9g m), %d samples" % (
             top, z[top], z.size - top)
     span = float(np.max(z) - np.min(z)) if z.size else 0.0
+    fspan = float(np.max(F) - np.min(F)) if F.size else 0.0
     if span > 1e-2:
         # (nm taken for metres were refused with a diagnosis of the curve's
         # shape; helper-56): 1 cm is beyond a piezo's or an indenter's travel
         hint = "z spans %.3g m: z and F must be in metres and newtons (SI), not nm, um or nN" % span
+    elif fspan > 1.0:
+        # 1 N is beyond an adhesive contact's forces at any scale the fit
+        # serves (nN taken for newtons: MDR_E_DEGENERATE with the baseline
+        # hint; helper-66, stop 71), as the CLI's FIT_FSPAN_SI
+        hint = "F spans %.3g N: z and F must be in metres and newtons (SI), not nm, um or nN" % fspan
     return Error(st, where, hint=hint)

@@ -15,14 +15,14 @@ P = dict(E=1e6, w=0.05)
 TEXT = {
     "MDR_E_NONFINITE": "input is NaN or infinite",
     "MDR_E_PARAM": "parameter out of range",
-    "MDR_E_KIND": "unknown profile kind",
+    "MDR_E_KIND": "unknown profile kind, or one this function does not take (a scene: paraboloid, cone, power law of integer n)",
     "MDR_E_RADIUS": "contact radius outside the profile's domain",
     "MDR_E_POSITION": "radial position outside [0, a)",
     "MDR_E_CONTROL": "unknown control mode, or machine stiffness not > 0 or out of range",
     "MDR_E_SINGULAR": "quantity is singular at this point",
     "MDR_E_OVERFLOW": "result beyond the arithmetic's range (too large, or a table too small to keep its digits)",
     "MDR_E_OUTSIDE": "contact edge beyond the last spring of the table",
-    "MDR_E_TABLE": "tabulated profile unusable (order, count or g(0))",
+    "MDR_E_TABLE": "tabulated profile unusable (r not from 0 or not increasing, too few points, or g(0) not 0)",
     "MDR_E_SIZE": "number of springs out of range",
     "MDR_E_NOCONV": "iteration cap reached",
 }

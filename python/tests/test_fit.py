@@ -373,14 +373,20 @@ def test_refusals(curve, arith):
 
 
 def test_units_hint(curve):
-    """A curve in nm (z alone, then z and F) is refused with a hint asking
-    for SI units (it was the slope's or the pinned top's hint, a diagnosis of
-    the curve's shape: helper-56)."""
+    """A curve in nm (z alone, then z and F, then F alone in nN) is refused
+    with a hint asking for SI units (it was the slope's or the pinned top's
+    hint, a diagnosis of the curve's shape: helper-56, helper-66)."""
     z, F = curve
     for fs in (1.0, 1e9):
         with pytest.raises(mdr.Error) as err:
             mdr.fit(z * 1e9, F * fs, "paraboloid", R=20e-9, k_machine=0.2)
         assert "must be in metres and newtons (SI)" in err.value.hint, str(err.value)
+    # F alone in nN (helper-66, stop 71: MDR_E_DEGENERATE with the baseline
+    # slope's hint): the hint names F's span
+    with pytest.raises(mdr.Error) as err:
+        mdr.fit(z, F * 1e9, "paraboloid", R=20e-9, k_machine=0.2)
+    assert err.value.hint.startswith("F spans ") and "must be in metres and newtons (SI)" in err.value.hint, \
+        str(err.value)
 
 
 def test_outlier_hint(curve):
