@@ -26,10 +26,12 @@ MDR_BEGIN_DECLS
  * name ## _f64) defined, so that every arithmetic has the same, once-written
  * contract. Read it with T = float and suffix _f32.
  *
- * Model (seed chapter 4): a rigid axisymmetric profile f(r) against an elastic
- * half-space of effective modulus E* with work of adhesion w. MDR maps it to a
+ * Model (chapter 4 of Popov, Hess & Willert, Handbook of Contact Mechanics,
+ * 2019, whose equation numbers these comments give): a rigid axisymmetric
+ * profile f(r) against an elastic half-space of effective modulus E* with
+ * work of adhesion w. MDR maps it to a
  * row of springs of stiffness E* per unit length pressed by the equivalent
- * profile g(x) (seed eq. 4.46); the contact state is parameterised by its
+ * profile g(x) (eq. 4.46); the contact state is parameterised by its
  * radius a:
  *   dl(a) = sqrt(2*pi*a*w/E*)            rule of Hess, 4.1 / 4.21
  *   d(a)  = g(a) - dl(a)                  4.25
@@ -115,7 +117,7 @@ mdr_status mdr_contact_init_f64(mdr_contact_f64 *c, uint8_t kind,
  * that f' (g' is +-inf just above a kink: MDR_E_OVERFLOW from
  * mdr_profile_eval() there when dg is asked for, like the flattened tip's
  * rim). Accuracy: order 2.5 in the sample spacing for a smooth f
- * (README "Tabulated tips"); a paraboloid, and a paraboloid with a flat
+ * (docs/profiles.md, "Tabulated tips"); a paraboloid, and a paraboloid with a flat
  * ending at a node, are reproduced to rounding. Cost of one evaluation
  * O(m); mdr_critical() on a table O(m^2).
  *
@@ -170,7 +172,7 @@ mdr_status mdr_profile_eval_f64(const mdr_contact_f64 *c, double x,
                                      double *g, double *dg, double *G);
 
 /**
- * @brief Equilibrium (Griffith) state at contact radius a: seed 4.19-4.26.
+ * @brief Equilibrium (Griffith) state at contact radius a: eq. 4.19-4.26.
  * @param[in]  c    from mdr_contact_init_<type>() or mdr_contact_init_table_<type>()
  * @param[in]  a    contact radius, same domain as mdr_profile_eval() [m]
  * @param[out] out  filled only on MDR_OK

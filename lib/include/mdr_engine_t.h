@@ -4,7 +4,7 @@
  * Included by mdr_engine.h once per arithmetic (MDR_T, MDR_SFX defined); read
  * it with T = float and suffix _f32.
  *
- * The table. The equivalent profile g(x) (seed 4.46) is held at the n+1
+ * The table. The equivalent profile g(x) (eq. 4.46) is held at the n+1
  * spring boundaries x_i = i*h, 0 <= x_i <= x_max = n*h, as g_i, the prefix
  * integral G_i = int_0^{x_i} g, t_i = sqrt(x_i) and, per spring, the excess
  * q_i = int_{x_i}^{x_{i+1}} g - h*(g_i + g_{i+1})/2 of its integral over the
@@ -19,7 +19,7 @@
  * engine"). dl(a) = c*sqrt(a) is never interpolated: the engine solves in
  * t = sqrt(a), where every branch is a polynomial of degree <= 4.
  *
- * The state machine (DESIGN section 2, seed 4.1/4.21). With the edge at a
+ * The state machine (the rule of Hess, eqs. 4.1 and 4.21). With the edge at a
  * and dl_w(a) = sqrt(2 pi a w/E*), dl_adv(a) = sqrt(2 pi a w_adv/E*):
  *   advance while d > g(a) - dl_adv(a);  recede while d < g(a) - dl_w(a);
  *   otherwise the edge is pinned and F = 2E*(a d - G(a)) follows d.
@@ -60,7 +60,7 @@ typedef struct {
  *  separation), so its rounding does not grow with the number of cycles.
  *  Each tick's work is exact whatever the tick, to the arithmetic's
  *  rounding of the states: on a moving edge the change of the elastic
- *  energy less the work of adhesion (seed 4.21), not a quadrature of F
+ *  energy less the work of adhesion (eq. 4.21), not a quadrature of F
  *  over d; a jump at constant control and a pinned stretch by the
  *  trapezoid, exact there.
  *  What a cycle dissipates (last_cycle, dissipated) is not that sum of
@@ -221,7 +221,7 @@ mdr_status MDR_SFX(mdr_table_init_profile)(MDR_SFX(mdr_table) *tab, MDR_SFX(mdr_
  * cancellation-free quotient. Order of accuracy in the sample spacing h_r:
  * f' has error O(h_r^2); with the integrable 1/sqrt kernel g converges at
  * order 2.5 (measured 2.47 for the exact sphere, host_tests/test_engine.c,
- * gap_table_order; README "Spring engine"). Quadratic f
+ * gap_table_order; docs/engine.md). Quadratic f
  * (paraboloid) is reproduced to rounding. f(0) may be any value (only f'
  * enters). The first kink of the samples (a worn flat's rim) is put on a
  * node by shortening the table by less than one part in k, k the springs

@@ -228,7 +228,7 @@ mdr_status mdr_table_q31_from_f64(mdr_table_q31 *tab, mdr_node_q31 *node,
  *        chooses D0, F0, Z0 (see the top of this file) and the Q1.30/Q2.29
  *        scene constants, rounded to nearest. The float version carries
  *        ~2^-22 relative error into c_w, c_adv and the machine weights
- *        (README "Fixed point", error budget).
+ *        (docs/fixed-point.md, its error budget).
  * @param[out] e    the engine; untouched unless MDR_OK
  * @param[in] tab   a q31 table (mdr_table_q31_from_f32/_f64 or generated);
  *                  must outlive the engine and stay as it was (a table

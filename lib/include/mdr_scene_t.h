@@ -71,7 +71,7 @@ typedef struct {
 
 #if MDR_CFG_SCENE
 /**
- * @brief A paraboloid scene, f = r^2/(2R), g = x^2/R (seed 4.28), table-free.
+ * @brief A paraboloid scene, f = r^2/(2R), g = x^2/R (eq. 4.28), table-free.
  *        Links nothing of the other profiles.
  * @param[out] s      instance; untouched unless MDR_OK
  * @param[in]  R      radius [m], finite > 0

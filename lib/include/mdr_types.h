@@ -9,8 +9,8 @@
  * Conventions used throughout the library (SI units everywhere):
  *   - compressive normal force F is positive, adhesive (tensile) force negative;
  *   - indentation depth d is positive into the surface;
- *   - normal stress sigma is negative in compression (seed eq. 4.42);
- *   - w is the WORK of adhesion (Dupre energy, seed eq. 4.5), not the surface
+ *   - normal stress sigma is negative in compression (eq. 4.42);
+ *   - w is the WORK of adhesion (Dupre energy, eq. 4.5), not the surface
  *     energy of one body: a paraboloid pulls off at F = -1.5*pi*w*R.
  */
 #ifndef MDR_TYPES_H
