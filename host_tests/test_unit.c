@@ -15,8 +15,9 @@
  *     against the 12-digit tables of CHECK_VALUES.md, REL32 = 2e-6 (f32), relative;
  *     depths relative to max(|d|, dl(a));
  *   stress against closed forms (4.42, the flat punch, the power law on its
- *     axis, the cone where a/r passes the range, the flattened tip's flat
- *     with a up to 1e4 b): 4e-15 to 1e-12 (f64), 2e-6 (f32) of its terms;
+ *     axis, the cone where a/r passes the range and next to the edge, the
+ *     flattened tip's flat with a up to 1e4 b): 4e-15 to 1e-12 (f64), 2e-6
+ *     (f32) of its terms;
  *   round trips: K_I(a, d(a)) = sqrt(2 E* w) to 1e-12 (f64) / 2e-5 (f32:
  *     g - d cancels up to a factor g/dl = 30 at the largest radius);
  *     F = 2E*(a d - G) from mdr_profile_eval to 1e-12 / 1e-5 of the scale 2E* a g.
@@ -693,6 +694,44 @@ static void stress_flat_tip_on_the_flat(void **st)
     }
 }
 
+/* The cone's equilibrium stress next to the contact's edge, r = a (1 -
+ * 10^-k), k = 1 .. 12 (f32: to 6, where r < a in float): 4.27 with
+ * acosh(a/r) = 2 atanh(sqrt((a - r)/(a + r))) (libm) and the edge term
+ * dl/sqrt(a^2 - r^2), dl = sqrt(2 pi a w/E*); 1e-13 (f64) and 2e-6 (f32,
+ * at its inputs rounded to float) of the two terms [measured 2.7e-16,
+ * 3.4e-8]. Found by helper-65 (stop 71): mdr_stress took the edge term as
+ * g(a) - d of d = g - dl, eps g/dl of it (theta 1.4, E* 1e12, w 1e-6, a 0.1
+ * m: 2.85e-8 off at k = 9), and acosh(a/r) as the log of a quotient next
+ * to 1 (1e-11 of it there). */
+static double cone_eq_sigma(double theta, double E, double w, double a, double r, double *scale)
+{
+    const double k0 = 0.5 * M_PI * tan(theta), dl = sqrt(2 * M_PI * a * w / E);
+    const double edge = dl / sqrt((a - r) * (a + r)), ac = 2 * atanh(sqrt((a - r) / (a + r)));
+    *scale = E / M_PI * (edge + k0 * ac);
+    return E / M_PI * (edge - k0 * ac);
+}
+
+static void stress_cone_next_to_the_edge(void **st)
+{
+    const double theta = 1.4, E = 1e12, w = 1e-6, a = 0.1;
+    const mdr_contact_f64 c = mk64(MDR_PROFILE_CONE, theta, 0, 0, E, w);
+    const mdr_contact_f32 cf = mk32(MDR_PROFILE_CONE, theta, 0, 0, E, w);
+    (void)st;
+    for (int k = 1; k <= 12; k++) {
+        const double r = a * (1 - pow(10, -k));
+        double sig, want, scale;
+        want = cone_eq_sigma(theta, E, w, a, r, &scale);
+        assert_int_equal(mdr_stress_f64(&c, a, r, &sig), MDR_OK);
+        rel_le(sig, want, scale, 1e-13, "cone sigma next to the edge");
+        if (k <= 6) {
+            float sf;
+            want = cone_eq_sigma((float)theta, (float)E, (float)w, (float)a, (float)r, &scale);
+            assert_int_equal(mdr_stress_f32(&cf, (float)a, (float)r, &sf), MDR_OK);
+            rel_le(sf, want, scale, 2e-6, "cone sigma next to the edge, f32");
+        }
+    }
+}
+
 /* The flattened tip's stress on its flat (r < b) with the contact far
  * beyond the flat (a up to 1e4 b): 4.27 at equilibrium,
  *   sigma = (E* / pi) (dl/sqrt(a^2 - r^2) - S), dl = sqrt(2 pi a w/E*),
@@ -1017,6 +1056,7 @@ int main(void)
         cmocka_unit_test(stress_flat_tip_on_the_flat),
         cmocka_unit_test(stress_powerlaw_axis),
         cmocka_unit_test(stress_cone_far_from_the_edge),
+        cmocka_unit_test(stress_cone_next_to_the_edge),
         cmocka_unit_test(stress_flat_tip_far_beyond_the_flat),
         cmocka_unit_test(wavy_phase_of_many_wavelengths),
         cmocka_unit_test(machine_limits),
