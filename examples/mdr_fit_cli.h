@@ -610,13 +610,13 @@ static int fit_curve_cmd(const struct fit_args *A)
         json_str(&j, "status", fit_status_name(c.res.st));
         json_str(&j, "message", mdr_status_str(c.res.st));
         const double span = fit_span(c.z, c.n), fspan = fit_span(c.F, c.n);
+        const int zs = span > FIT_SPAN_SI; /* z's span first, as before F's was checked */
         char h[200];
-        if (span > FIT_SPAN_SI || fspan > FIT_FSPAN_SI) {
+        if (zs || fspan > FIT_FSPAN_SI) {
             /* (nm or um taken for metres were refused with a diagnosis of
              * the curve's shape: MDR_E_DEGENERATE, MDR_E_PINNED; helper-56) */
             (void)snprintf(h, sizeof h, "%s spans %.3g %s: z and F must be in metres and newtons (SI), not nm, um "
-                                        "or nN", span > FIT_SPAN_SI ? "z" : "F", span > FIT_SPAN_SI ? span : fspan,
-                           span > FIT_SPAN_SI ? "m" : "N");
+                                        "or nN", zs ? "z" : "F", zs ? span : fspan, zs ? "m" : "N");
             json_str(&j, "hint", h);
         } else if ((c.res.st == MDR_E_NOCONTACT || c.res.st == MDR_E_NOPULLOFF || c.res.st == MDR_E_FEW) &&
                    c.n > 0) {
