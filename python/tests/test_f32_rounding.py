@@ -267,9 +267,12 @@ def test_states_as_cli(cli, name):
     # for it: these radii lie 1e-1 to 1e-8 from the sphere's a = R and the
     # tip's rim, where K_I = E* (g(a) - d)/sqrt(pi a) moves with a's rounding
     # to float far beyond 2e-6 of sqrt(2 E* w); the CLI names the same K_I
-    # error, or the derivatives' where they lie further beyond theirs)
+    # error, or the derivatives' where they lie further beyond theirs;
+    # measured: sphere 9 answered, 41 K_I refused by both, 8 refused for the
+    # rounding; flattip 12, 26, 2 and 18 K_I refused where the CLI names the
+    # derivatives: the answered ones are still checked, at least 5 each)
     assert n["answer"] + n.get("answer (derivatives refused by the CLI)", 0) + n.get("refused K_I", 0) + \
-        n.get("K_I refused (the CLI: the derivatives)", 0) > 40 and n["refused"] > 0, n
+        n.get("K_I refused (the CLI: the derivatives)", 0) > 40 and n["refused"] > 0 and n["answer"] >= 5, n
 
 
 def tip_files(tmp_path):
