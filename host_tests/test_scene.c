@@ -568,6 +568,112 @@ static void scene_hertz_scale(void **state)
     assert_true(4 * ran32 >= 3 * SCALE_CASES);
 }
 
+/* Contacts small against the scene's units (helper-67's attack: a power
+ * law n = 4 without adhesion, a ~ 1e-8 m against a_s ~ 6 m, F ~ 1e-33 N:
+ * f32 answered F 8.3e-3 off with MDR_OK, the scene's force tau^(2n+2)
+ * below float's normal range, F_s 3e11 N). Over a = 1e-20 R to R,
+ * approach and retraction under fixed grips and load, n = 1 to 8, R 1 um
+ * and 1 m, E* 1e4 and 1e10 Pa: each tick either answers within the closed
+ * form's tolerance (1e-12 f64, TOL_32 f32, relative to the tick's own
+ * value, plus for f32 where the scene's units are at most SI's, F_s <= 1 N
+ * and D_s <= 1 m, the absolute floor 2^(2n+2) FLT_MIN of mdr_scene_t.h in N
+ * and m) or, only where the units are larger (or the control is below
+ * float's normal range), is refused with MDR_E_OVERFLOW, the scene unchanged, and only where the scene's force
+ * scale (a/a_s)^(n+1) lies within 2^40 of FLT_MIN; f64 answers all. */
+static void scene_contact_small_against_units(void **state)
+{
+    static const double Rs[] = {1e-5, 1.0}, Es[] = {1e4, 1e10};
+    double worst[2] = {0, 0};
+    int n, ir, ie, ctl, k, refused = 0, answered = 0, floored = 0;
+    (void)state;
+    for (n = 1; n <= 8; n++) {
+        const double kn = sqrt(M_PI) * tgamma(n / 2.0 + 1) / tgamma((n + 1) / 2.0);
+        for (ir = 0; ir < 2; ir++) {
+            for (ie = 0; ie < 2; ie++) {
+                const double R = Rs[ir], E = Es[ie], C = pow(R, 1 - n);
+                const double p64[3] = {C, n, 0};
+                const float p32[3] = {(float)C, (float)n, 0};
+                mdr_contact_f64 c64;
+                mdr_contact_f32 c32;
+                assert_int_equal(mdr_contact_init_f64(&c64, MDR_PROFILE_POWERLAW, p64, E, 0.0), MDR_OK);
+                assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_POWERLAW, p32, (float)E, 0.0f), MDR_OK);
+                for (ctl = 0; ctl < 2; ctl++) {
+                    mdr_scene_f64 s64;
+                    mdr_scene_f32 s32;
+                    int small_units;
+                    double floor;
+                    assert_int_equal(mdr_scene_init_contact_f64(&s64, &c64, 0.0, 0.0, MDR_OUT_ALL, NULL), MDR_OK);
+                    assert_int_equal(mdr_scene_init_contact_f32(&s32, &c32, 0.0f, 0.0f, MDR_OUT_ALL, NULL), MDR_OK);
+                    small_units = s32.Fs <= 1.0f && s32.Ds <= 1.0f;
+                    floor = small_units ? ldexp(FLT_MIN, 2 * n + 2) : 0.0;
+                    for (k = -40; k <= 41; k++) { /* a = R 10^(-|k|/2): in, out, then u = 0 */
+                        const double a = R * pow(10.0, -0.5 * abs(k)), d = kn * C * pow(a, n);
+                        const double F = 2 * E * a * d * n / (n + 1.0);
+                        const float u32 = k == 41 ? 0.0f : (float)(ctl == 0 ? d : F);
+                        const double u = k == 41 ? 0.0 : ctl == 0 ? d : F;
+                        /* the closed form at the control as float rounds it */
+                        const double aw = ctl == 0 ? pow((double)u32 / (kn * C), 1.0 / n)
+                                                   : pow((double)u32 * (n + 1.0) / (2 * E * n * kn * C), 1.0 / (n + 1.0));
+                        const double dw = kn * C * pow(aw, n), Fw = 2 * E * aw * dw * n / (n + 1.0);
+                        mdr_step_f64 o64;
+                        mdr_step_f32 o32;
+                        mdr_scene_f32 b32 = s32;
+                        int st;
+                        st = ctl == 0 ? mdr_scene_step_d_f64(&s64, u, &o64) : mdr_scene_step_F_f64(&s64, u, &o64);
+                        assert_int_equal(st, MDR_OK);
+                        if (k < 41) {
+                            const double e = ctl == 0 ? fabs(o64.F - F) / F : fmax(fabs(o64.a - a) / a, fabs(o64.d - d) / d);
+                            worst[0] = fmax(worst[0], e);
+                            if (e > 1e-12) {
+                                printf("  f64 n %d R %g E %g %s a/R %.1e: error %.2e\n", n, R, E, ctl ? "load" : "grips", a / R, e);
+                            }
+                            assert_true(e <= 1e-12);
+                        }
+                        st = ctl == 0 ? mdr_scene_step_d_f32(&s32, u32, &o32) : mdr_scene_step_F_f32(&s32, u32, &o32);
+                        if (st == MDR_E_OVERFLOW) {
+                            const double scale = pow(a / (double)s32.as, n + 1.0);
+                            const int same = memcmp(&b32, &s32, sizeof s32) == 0;
+                            const int sub = (double)u32 < FLT_MIN; /* (a control float does not resolve) */
+                            if ((small_units && !sub) || !(scale < 0x1p40 * FLT_MIN) || !same) {
+                                printf("  f32 n %d R %g E %g %s a/R %.1e: refused at (a/a_s)^(n+1) %.2e, F_s %.1e N, D_s %.1e m%s\n",
+                                       n, R, E, ctl ? "load" : "grips", a / R, scale, (double)s32.Fs, (double)s32.Ds,
+                                       same ? "" : ", the scene changed");
+                            }
+                            assert_true(!small_units || sub);
+                            assert_true(scale < 0x1p40 * FLT_MIN);
+                            assert_true(same);
+                            refused++;
+                            continue;
+                        }
+                        assert_int_equal(st, MDR_OK);
+                        answered++;
+                        if (k < 41 && (double)u32 >= FLT_MIN) { /* (a control below float's normal
+                                                                       range has no closed form to check) */
+                            /* relative to the tick's value; the floor in N (F) and m (d) */
+                            const double eF = fabs(o32.F - Fw) / (Fw + floor / TOL_32);
+                            const double e = ctl == 0 ? eF
+                                                      : fmax(fabs(o32.a - aw) / aw, fabs(o32.d - dw) / (dw + floor / TOL_32));
+                            floored += ctl == 0 ? Fw < floor / TOL_32 : dw < floor / TOL_32;
+                            worst[1] = fmax(worst[1], e);
+                            if (!(e <= TOL_32)) {
+                                printf("  f32 n %d R %g E %g %s a/R %.1e: error %.2e\n", n, R, E, ctl ? "load" : "grips", a / R, e);
+                            }
+                            assert_true(e <= TOL_32);
+                        } else if (k == 41) {
+                            assert_true(o32.a == 0.0f && o32.F == 0.0f);
+                        }
+                    }
+                    assert_true(s64.contact == 0 && s32.contact == 0);
+                }
+            }
+        }
+    }
+    printf("  w = 0, n 1..8, a/R 1e-20..1: f32 answered %d ticks (%d below the floor's scale), refused %d; "
+           "worst f64 %.1e, f32 %.1e (tolerance %.0e)\n",
+           answered, floored, refused, worst[0], worst[1], TOL_32);
+    assert_true(refused > 0 && answered > 4 * refused);
+}
+
 static void scene_errors(void **state)
 {
     mdr_scene_f32 s, before;
@@ -1966,6 +2072,7 @@ int main(void)
         cmocka_unit_test(scene_outputs),
         cmocka_unit_test(scene_errors),
         cmocka_unit_test(scene_hertz_scale),
+        cmocka_unit_test(scene_contact_small_against_units),
         cmocka_unit_test(scene_z_range),
         cmocka_unit_test(scene_z_soft_machine),
         cmocka_unit_test(scene_z_other_controls),

@@ -68,7 +68,15 @@ typedef struct {
     double z_min;   /**< the least z [m] a separated step_z answers without its full tick:
                         minus the largest finite value of the type with a machine, the largest
                         without one (no z qualifies) */
-    double tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine */
+    double tlo;     /**< the least edge tau a contact may have where F_s > 1 N or D_s > 1 m:
+                        tau^(2n+2) (F's scale) at least 2^(2n+2) times the smallest normal
+                        value of the type (a smaller edge, a contact absurdly small against
+                        a_s, is refused: MDR_E_OVERFLOW); 0 with smaller units (below that
+                        edge d and F keep an absolute floor of 2^(2n+2) FLT_MIN (f32) in m
+                        and N) */
+    double tf[3];   /**< sqrt(a_fold/a_s) of the retraction branch: load, grips, machine (without
+                        adhesion, tlo: the contact ends at u = 0, and a control between 0 and
+                        that of tlo is refused) */
     double uf[3];   /**< the control at that fold, in scene units (below it: pull-off) */
     double nu;      /**< n/(n+1) */
     double in1;     /**< 1/(n+1) */
@@ -135,7 +143,9 @@ mdr_status mdr_scene_init_contact_f64(mdr_scene_f64 *s, const mdr_contact_f64 *c
  * @param[out] out  what happened; only the fields of s->outputs are written
  *                  (d and F always), and only on MDR_OK
  * @return MDR_OK; MDR_E_NULL, MDR_E_NONFINITE; MDR_E_OVERFLOW (a result or
- *         energy sum would leave the arithmetic's range: state unchanged);
+ *         energy sum would leave the arithmetic's range, or the contact
+ *         would be too small against a_s for it (tau below tlo): state
+ *         unchanged);
  *         MDR_E_NOCONV (not expected: bisection backs every iteration;
  *         state unchanged, MDR_FLAG_NOCONV set)
  *

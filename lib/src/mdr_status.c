@@ -17,7 +17,7 @@ const char *mdr_status_str(mdr_status s)
     case MDR_E_CONTROL: return "unknown control mode, or machine stiffness not > 0 or out of range";
     case MDR_E_NOCONV: return "iteration cap reached";
     case MDR_E_SINGULAR: return "quantity is singular at this point";
-    case MDR_E_OVERFLOW: return "result beyond the arithmetic's range (too large, or a table too small to keep its digits)";
+    case MDR_E_OVERFLOW: return "result beyond the arithmetic's range (too large, or too small to keep its digits: a table too small, or a scene's contact too small against its units)";
     case MDR_E_OUTSIDE: return "contact edge beyond the last spring of the table";
     case MDR_E_TABLE: return "tabulated profile unusable (r not from 0 or not increasing, too few points, or g(0) not 0)";
     case MDR_E_SIZE: return "number of springs out of range";

@@ -20,7 +20,7 @@ TEXT = {
     "MDR_E_POSITION": "radial position outside [0, a)",
     "MDR_E_CONTROL": "unknown control mode, or machine stiffness not > 0 or out of range",
     "MDR_E_SINGULAR": "quantity is singular at this point",
-    "MDR_E_OVERFLOW": "result beyond the arithmetic's range (too large, or a table too small to keep its digits)",
+    "MDR_E_OVERFLOW": "result beyond the arithmetic's range (too large, or too small to keep its digits: a table too small, or a scene's contact too small against its units)",
     "MDR_E_OUTSIDE": "contact edge beyond the last spring of the table",
     "MDR_E_TABLE": "tabulated profile unusable (r not from 0 or not increasing, too few points, or g(0) not 0)",
     "MDR_E_SIZE": "number of springs out of range",
