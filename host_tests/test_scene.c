@@ -674,6 +674,54 @@ static void scene_contact_small_against_units(void **state)
     assert_true(refused > 0 && answered > 4 * refused);
 }
 
+/* A contact whose pinned coefficients leave float's range (dtau/du per
+ * newton or metre overflows at an edge that small) is kept by a lazy move
+ * (load, machine), and every later tick asked for those coefficients first
+ * and was refused: a separating control included, forever (helper-69,
+ * stop 72: a paraboloid under loads of 8.4e-45 and 2.8e-45 N, refused at
+ * 1.4e-45 N, then at 0, -1 and 1e-3 N; a power law n = 7 through a
+ * machine the same). Now a tick whose control leaves the band the move
+ * kept moves from it: the same paths separate at 0 (MDR_OK, a = 0) and
+ * touch again at a control of ordinary size. */
+static void scene_tiny_contact_not_stuck(void **state)
+{
+    static const float F[] = {8.40779e-45f, 2.8026e-45f, 1.4013e-45f, 0.0f, -1.0f, 1e-3f};
+    static const float z[] = {5.70328e-43f, 2.28412e-43f, 1.13505e-43f, 0.0f, -1.0f, 1e-3f};
+    const float q[3] = {1.262062e-11f, 7, 0};
+    mdr_scene_f32 s;
+    mdr_contact_f32 c;
+    mdr_step_f32 o;
+    int i, st;
+    (void)state;
+    assert_int_equal(mdr_scene_init_paraboloid_f32(&s, 6.48162862e-07f, 0.0334777525f, 0, 0, 0, MDR_OUT_ALL, NULL), MDR_OK);
+    for (i = 0; i < 6; i++) {
+        mdr_scene_f32 b = s;
+        st = mdr_scene_step_F_f32(&s, F[i], &o);
+        if (st != MDR_OK) { /* (the contact at 1.4e-45 N: its coefficients overflow) */
+            assert_int_equal(st, MDR_E_OVERFLOW);
+            assert_int_equal(i, 2);
+            assert_memory_equal(&b, &s, sizeof s);
+            continue;
+        }
+        assert_int_equal(s.contact, F[i] > 0.0f);
+    }
+    assert_true(o.a > 0.0f && o.F == 1e-3f);
+    assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_POWERLAW, q, 0.00102911887f, 0), MDR_OK);
+    assert_int_equal(mdr_scene_init_contact_f32(&s, &c, 0, 0.0110870311f, MDR_OUT_ALL, NULL), MDR_OK);
+    for (i = 0; i < 6; i++) {
+        mdr_scene_f32 b = s;
+        st = mdr_scene_step_z_f32(&s, z[i], &o);
+        if (st != MDR_OK) {
+            assert_int_equal(st, MDR_E_OVERFLOW);
+            assert_int_equal(i, 2);
+            assert_memory_equal(&b, &s, sizeof s);
+            continue;
+        }
+        assert_int_equal(s.contact, z[i] > 0.0f);
+    }
+    assert_true(o.a > 0.0f);
+}
+
 static void scene_errors(void **state)
 {
     mdr_scene_f32 s, before;
@@ -875,6 +923,117 @@ static void scene_z_soft_machine(void **state)
     }
     printf("  soft machine: z as given, F - k_m (z - d) %.2g of 1.5 pi w R, f32 d %.2g of max|d|\n", ef, ed / dmax);
     rel_le(ed, 0.0, dmax, TOL_32, "soft machine: f32 d against f64");
+}
+
+/* The state's force through a soft machine (helper-69, stop 72): the slow
+ * path's state (a first touch, a jump-in's landing, a root of the slow
+ * move) took F = 2E* (a d - G) from d = (z/k_m-scaled control + kappa G)/(1 + kappa a),
+ * whose two terms agree to about log10(kappa a) digits through a soft
+ * machine (kappa = 2E* a_s/k_m): an AFM tip's jump-in (R 20.6 nm, E* 206
+ * MPa, w 0.205, w_adv 0.205, k_m 0.012 N/m) f32 3.3e-5 of max|F| off f64,
+ * a power law n = 1 with kappa 4e8 answered +2.5e-5 N for -3.0e-7 N, MDR_OK
+ * (f64 4e-8 of it). AFM-like paraboloids (R 5 nm to 1 um, E* 1 MPa to
+ * 200 GPa, w 0.01 to 1, w_adv w/2 and 0.99 w, k_m 1e-3 to 10 N/m): a touch
+ * at z = 1e-6 of the depth scale a0^2/R (a jump-in), 20 ticks to a0^2/R,
+ * 20 back to -a0^2/R; every tick of the scenes and the spring engines (1024
+ * springs, two radii) within the machine's equilibrium F = k_m (z - d),
+ * computed here from the tick's own d, to TOL_MF64 = 1e-12 (f64) and TOL_32
+ * (f32) of the path's max|F| (plus 4 eps k_m (|z| + |d|), the rounding of
+ * that d), and the f32 F within TOL_32 of the f64 one. */
+#define TOL_MF64 1e-12
+static void soft_machine_tick(const char *what, double km, double z, double d, double F, double Fmax, double tol,
+                              double eps, double *worst)
+{
+    /* (k_m (z - d) from the tick's d carries k_m eps |d| of its rounding:
+     * a stiff machine's, where z - d is small against d) */
+    const double e = fabs(F - km * (z - d)) / (Fmax + 4 * eps * km * (fabs(z) + fabs(d)) / tol);
+    *worst = fmax(*worst, e / tol);
+    if (!(e <= tol)) {
+        printf("  %s: F %.9g, k_m (z - d) %.9g (z %.9g, d %.9g): %.2e of max|F|\n", what, F, km * (z - d), z, d, e);
+    }
+    assert_true(e <= tol);
+}
+
+static void scene_soft_machine_state(void **state)
+{
+    static mdr_node_f32 n32[MDR_TABLE_NODES(1024)];
+    static mdr_node_f64 n64[MDR_TABLE_NODES(1024)];
+    static const double Rs[] = {5e-9, 2e-8, 1e-7, 1e-6}, Es[] = {1e6, 1e8, 2e11}, Ws[] = {0.01, 0.2, 1.0};
+    static const double kms[] = {1e-3, 1e-2, 0.2, 10.0}, adv[] = {0.5, 0.99};
+    double worst[3] = {0, 0, 0};
+    int ir, ie, iw, ia, ik, i, runs = 0;
+    (void)state;
+    for (ir = 0; ir < 4; ir++) {
+        for (ie = 0; ie < 3; ie++) {
+            for (iw = 0; iw < 3; iw++) {
+                const double R = Rs[ir], E = Es[ie], w = Ws[iw];
+                const double a0 = cbrt(9 * M_PI * w * R * R / (2 * E)), dj = a0 * a0 / R;
+                const int eng = ir == 1 || ir == 3; /* (the spring engines at two radii) */
+                mdr_table_f64 t64;
+                mdr_table_f32 t32;
+                if (eng) {
+                    four_tables(R, E, w, 1024, 3 * a0, &t64, n64, &t32, n32);
+                }
+                for (ia = 0; ia < 2; ia++) {
+                    for (ik = 0; ik < 4; ik++) {
+                        const double wa = adv[ia] * w, km = kms[ik];
+                        const double kmf = (double)(float)km;
+                        mdr_scene_f64 s64;
+                        mdr_scene_f32 s32;
+                        mdr_engine_f64 e64;
+                        mdr_engine_f32 e32;
+                        mdr_step_f64 o[41][2];
+                        mdr_step_f32 q[41][2];
+                        double zs[41], Fmax = 0;
+                        assert_int_equal(mdr_scene_init_paraboloid_f64(&s64, R, E, w, wa, km, MDR_OUT_ALL, NULL), MDR_OK);
+                        assert_int_equal(mdr_scene_init_paraboloid_f32(&s32, (float)R, (float)E, (float)w, (float)wa,
+                                                                       (float)km, MDR_OUT_ALL, NULL),
+                                         MDR_OK);
+                        if (eng) {
+                            assert_int_equal(mdr_engine_init_f64(&e64, &t64, E, w, wa, km), MDR_OK);
+                            assert_int_equal(mdr_engine_init_f32(&e32, &t32, (float)E, (float)w, (float)wa, (float)km),
+                                             MDR_OK);
+                        }
+                        for (i = 0; i < 41; i++) {
+                            const double z = i == 0 ? 1e-6 * dj : i <= 20 ? dj * i / 20 : dj * (1 - (i - 20) / 10.0);
+                            const float zf = (float)z;
+                            zs[i] = z;
+                            assert_int_equal(mdr_scene_step_z_f64(&s64, z, &o[i][0]), MDR_OK);
+                            assert_int_equal(mdr_scene_step_z_f32(&s32, zf, &q[i][0]), MDR_OK);
+                            if (eng) {
+                                assert_int_equal(mdr_engine_step_z_f64(&e64, z, &o[i][1]), MDR_OK);
+                                assert_int_equal(mdr_engine_step_z_f32(&e32, zf, &q[i][1]), MDR_OK);
+                            }
+                            Fmax = fmax(Fmax, fabs(o[i][0].F));
+                        }
+                        assert_true(o[0][0].event == MDR_EV_JUMP_IN && Fmax > 0);
+                        for (i = 0; i < 41; i++) {
+                            int j;
+                            for (j = 0; j <= eng; j++) {
+                                const char *name = j ? "engine" : "scene";
+                                char what[160];
+                                snprintf(what, sizeof what, "%s f64 R %g E %g w %g w_adv %g k_m %g tick %d", name, R, E, w,
+                                         wa, km, i);
+                                soft_machine_tick(what, km, zs[i], o[i][j].d, o[i][j].F, Fmax, TOL_MF64, DBL_EPSILON, &worst[0]);
+                                what[j ? 8 : 7] = '3', what[j ? 9 : 8] = '2';
+                                soft_machine_tick(what, kmf, (double)(float)zs[i], (double)q[i][j].d, (double)q[i][j].F,
+                                                  Fmax, TOL_32, FLT_EPSILON, &worst[1]);
+                                worst[2] = fmax(worst[2], fabs((double)q[i][j].F - o[i][j].F) / Fmax / TOL_32);
+                                if (!(fabs((double)q[i][j].F - o[i][j].F) <= TOL_32 * Fmax)) {
+                                    printf("  %s: f32 F %.9g, f64 %.9g\n", what, (double)q[i][j].F, o[i][j].F);
+                                }
+                                assert_true(fabs((double)q[i][j].F - o[i][j].F) <= TOL_32 * Fmax);
+                            }
+                        }
+                        runs++;
+                    }
+                }
+            }
+        }
+    }
+    printf("  soft machines, %d paths from a jump-in: F = k_m (z - d) within %.2g (f64) and %.2g (f32) of their "
+           "tolerances, f32 F against f64 %.2g\n",
+           runs, worst[0], worst[1], worst[2]);
 }
 
 /* z under grips and under load with a machine (k_m > 0): the machine's base
@@ -2073,8 +2232,10 @@ int main(void)
         cmocka_unit_test(scene_errors),
         cmocka_unit_test(scene_hertz_scale),
         cmocka_unit_test(scene_contact_small_against_units),
+        cmocka_unit_test(scene_tiny_contact_not_stuck),
         cmocka_unit_test(scene_z_range),
         cmocka_unit_test(scene_z_soft_machine),
+        cmocka_unit_test(scene_soft_machine_state),
         cmocka_unit_test(scene_z_other_controls),
         cmocka_unit_test(scene_machine_sweep),
         cmocka_unit_test(scene_energy_any_tick),
