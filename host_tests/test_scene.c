@@ -1015,7 +1015,8 @@ static void scene_soft_machine_state(void **state)
                                 snprintf(what, sizeof what, "%s f64 R %g E %g w %g w_adv %g k_m %g tick %d", name, R, E, w,
                                          wa, km, i);
                                 soft_machine_tick(what, km, zs[i], o[i][j].d, o[i][j].F, Fmax, TOL_MF64, DBL_EPSILON, &worst[0]);
-                                what[j ? 8 : 7] = '3', what[j ? 9 : 8] = '2';
+                                snprintf(what, sizeof what, "%s f32 R %g E %g w %g w_adv %g k_m %g tick %d", name, R, E, w,
+                                         wa, km, i);
                                 soft_machine_tick(what, kmf, (double)(float)zs[i], (double)q[i][j].d, (double)q[i][j].F,
                                                   Fmax, TOL_32, FLT_EPSILON, &worst[1]);
                                 worst[2] = fmax(worst[2], fabs((double)q[i][j].F - o[i][j].F) / Fmax / TOL_32);
