@@ -46,7 +46,11 @@
  * n_pinned method iterations arith status (+ w_adv w_adv_err n_approach); exit 0.
  * A fit that fails prints {"status": ..., "message": ...} (and "hint" for
  * MDR_E_DEGENERATE of the full fit with the slope fitted, and for
- * MDR_E_PINNED with --unpinned or --approach) and exits 1.
+ * MDR_E_PINNED with --unpinned or --approach) and exits 1. With --arith f32
+ * each answer is checked against f64's fit of the same samples
+ * (fit_check_f32): refused with f64's status where f64 refuses them, and
+ * with MDR_E_PARAM where E*, w or w_adv lies further from f64's than
+ * MDR_HOST_F32_FIT_MAX and 3 of its reported errors (a "hint" names it).
  * --map prints CSV curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope
  * (the last three appended at stop 40: the columns before keep their
  * places), one row per curve in the input's order (status "ok" or the
@@ -80,6 +84,11 @@ typedef struct {
     uint32_t n, n_approach, n_pinned;
     uint16_t iterations;
     uint8_t regime, method;
+    /* --arith f32 refused against f64's fit of the same samples
+     * (fit_check_f32): f32_which 0 E*, 1 w, 2 w_adv (f32_off: how far),
+     * -2 f64 refuses them (st: f64's status); -1 not refused */
+    int f32_which;
+    double f32_off;
 } fit_res;
 
 /* a thread's buffer for one curve in an arithmetic: z, F and the workspace */
@@ -113,18 +122,48 @@ static int fit_scratch_grow(fit_scratch *s, size_t n, size_t elem)
 #undef FIT_T
 #undef FIT_SFX
 
+/* An f32 fit's answer (o, MDR_OK) against f64's fit of the same samples,
+ * as the CLI's other f32 answers are checked against f64's: refused where
+ * f64 refuses the samples (o->st: f64's status) or where E*, w or w_adv
+ * lies further from f64's than MDR_HOST_F32_FIT_MAX and 3 of its own
+ * reported errors (mdr_host_f32_fit_off: MDR_E_PARAM) */
+static void fit_check_f32(const struct fit_args *A, const double *z, const double *F, size_t n, fit_scratch *s,
+                          fit_res *o)
+{
+    fit_res r;
+    const double p32[3] = {o->E, o->w, o->w_adv}, e32[3] = {o->E_err, o->w_err, o->w_adv_err};
+    double off;
+    int which;
+    memset(&r, 0, sizeof r);
+    if (fit_run_f64(A, z, F, n, s, &r) != MDR_OK) {
+        o->st = r.st;
+        o->f32_which = -2;
+        return;
+    }
+    {
+        const double p64[3] = {r.E, r.w, r.w_adv};
+        off = mdr_host_f32_fit_off(p32, e32, p64, A->approach ? 3 : 2, &which);
+    }
+    if (off > MDR_HOST_F32_FIT_MAX) {
+        o->st = MDR_E_PARAM;
+        o->f32_which = which;
+        o->f32_off = off;
+    }
+}
+
 static mdr_status fit_one(const struct fit_args *A, const double *z, const double *F, size_t n, fit_scratch *s,
                           fit_res *o)
 {
     memset(o, 0, sizeof *o);
+    o->f32_which = -1;
     if (n > UINT32_MAX / 2) {
         o->st = MDR_E_SIZE;
         return o->st;
     }
     if (A->f64) {
         o->st = fit_run_f64(A, z, F, n, s, o);
-    } else {
-        o->st = fit_run_f32(A, z, F, n, s, o);
+    } else if ((o->st = fit_run_f32(A, z, F, n, s, o)) == MDR_OK) {
+        fit_check_f32(A, z, F, n, s, o);
     }
     return o->st;
 }
@@ -612,7 +651,17 @@ static int fit_curve_cmd(const struct fit_args *A)
         const double span = fit_span(c.z, c.n), fspan = fit_span(c.F, c.n);
         const int zs = span > FIT_SPAN_SI; /* z's span first, as before F's was checked */
         char h[200];
-        if (zs || fspan > FIT_FSPAN_SI) {
+        if (c.res.f32_which == -2) {
+            (void)snprintf(h, sizeof h, "f32 answered, but f64's fit of the same samples is refused (%s): take "
+                                        "--arith f64",
+                           fit_status_name(c.res.st));
+            json_str(&j, "hint", h);
+        } else if (c.res.f32_which >= 0) {
+            (void)snprintf(h, sizeof h, "f32's %s is %.2g off f64's fit of the same samples (more than %g and 3 of "
+                                        "its reported errors): take --arith f64",
+                           mdr_host_f32_fit_which(c.res.f32_which), c.res.f32_off, MDR_HOST_F32_FIT_MAX);
+            json_str(&j, "hint", h);
+        } else if (zs || fspan > FIT_FSPAN_SI) {
             /* (nm or um taken for metres were refused with a diagnosis of
              * the curve's shape: MDR_E_DEGENERATE, MDR_E_PINNED; helper-56) */
             (void)snprintf(h, sizeof h, "%s spans %.3g %s: z and F must be in metres and newtons (SI), not nm, um "

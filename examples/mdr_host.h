@@ -447,6 +447,45 @@ static inline int mdr_host_crit64(const mdr_host_f32_eq_pair *x, uint8_t control
            mdr_critical_f64(&x->c, control, k_m, a0 != NULL ? *a0 : s0, o) == MDR_OK;
 }
 
+/** Above this difference (relative to f64's value; w_adv's to f64's w) an
+ *  f32 fit's E*, w or w_adv is refused where 3 of its own reported errors do
+ *  not cover it either (mdr_host_f32_fit_off()): the f32 fit's round trips
+ *  promise 5e-5 (docs/fitting.md, Accuracy), and its reported errors leave
+ *  out the arithmetic's own (on noise-free data they are the rounding's).
+ *  Through a lever about 20 times softer than the contact a noise-free f32
+ *  fit answered w 1.02e-4 off at 13.5 reported errors, status ok
+ *  (helper-68, stop 71; f64 within 2e-15). */
+#define MDR_HOST_F32_FIT_MAX 5e-5
+
+/* How far an f32 fit lies from f64's fit of the same samples: of E*, w and
+ * (n = 3, with the approach) w_adv, p32 and its reported errors e32
+ * against f64's p64, the largest |p32 - p64|/|p64| (w_adv's over |w64|)
+ * among those whose difference also exceeds 3 e32, and which one in *which
+ * (0 E*, 1 w, 2 w_adv; -1 and 0 where every difference is within 3 of its
+ * errors). The CLI's `fit --arith f32` and the Python package's
+ * fit(arith="f32") refuse a value beyond MDR_HOST_F32_FIT_MAX. */
+static inline double mdr_host_f32_fit_off(const double p32[3], const double e32[3], const double p64[3], int n,
+                                          int *which)
+{
+    double worst = 0.0;
+    int k;
+    *which = -1;
+    for (k = 0; k < n && k < 3; k++) {
+        const double dv = fabs(p32[k] - p64[k]), off = dv / fabs(p64[k == 2 ? 1 : k]);
+        if (dv > 3.0 * e32[k] && off > worst) {
+            worst = off;
+            *which = k;
+        }
+    }
+    return worst;
+}
+
+/* the name of mdr_host_f32_fit_off()'s which */
+static inline const char *mdr_host_f32_fit_which(int which)
+{
+    return which == 0 ? "E*" : which == 1 ? "w" : "w_adv";
+}
+
 /** Above this error an f32 critical state is refused
  *  (mdr_host_f32_crit_err()): the critical search's f32 tolerance
  *  (host_tests/test_critical.c REL32; its sweep's worst 2.5e-6). */

@@ -99,7 +99,12 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
         from the two-point method or E0, w0) or "two-point" (the pull-off
         force and the zero-force point only).
     z_e: equilibrium distance of the Tabor parameter [m] (default 0.3e-9).
-    arith: "f64" (default) or "f32" (what firmware computes).
+    arith: "f64" (default) or "f32" (what firmware computes). An f32
+        answer is checked against f64's fit of the same samples, as `mdr
+        fit --arith f32` checks it: E*, w or w_adv further from f64's than
+        5e-5 (relative; mdr._mdr.lib.mdrpy_f32_fit_max()) and 3 of its own
+        reported errors raises MDR_E_PARAM (the figure in the hint), and
+        samples f64 refuses raise f64's status.
     E0, w0: first guesses [Pa, J/m^2], both or neither.
     approach: also fit w_adv to the approach part (E*, z0, F_base held).
     unpinned: the caller knows the retract recedes from its top (no
@@ -187,11 +192,38 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
     out = {f: float(getattr(res, f)) for f in FIT_DOUBLES}
     if not res.n_approach:
         out["w_adv"] = out["w_adv_err"] = None
+    if arith == "f32":
+        _check_f32(out, z, F, tip, k_machine, method=method, z_e=z_e, E0=E0, w0=w0, approach=approach,
+                   unpinned=unpinned, flat_baseline=flat_baseline)
     fitted = tip.replace(E=out["E"], w=out["w"])
     return FitResult(**out, n=int(res.n), n_approach=int(res.n_approach), n_pinned=int(res.n_pinned), iterations=int(res.iterations),
                      method=_METHOD_NAMES[res.method], regime=ffi.string(lib.mdr_regime_str(res.regime)).decode(),
                      z_e=float(ze), arith=arith, k_machine=float(k), contact=fitted, z=z, F=F, _tip=tip, _z=z,
                      _res=res)
+
+
+def _check_f32(out, z, F, tip, k_machine, **opts):
+    """An f32 answer against f64's fit of the same samples, as `mdr fit
+    --arith f32` checks it (mdr_host_f32_fit_off, one rule for both): f64
+    refusing the samples raises its status; E*, w or w_adv further from
+    f64's than mdrpy_f32_fit_max() (5e-5) and 3 of the f32 answer's own
+    reported errors raises MDR_E_PARAM, with the figure in the hint."""
+    where = "fit(%d samples, method=%r, arith='f32')" % (z.size, opts["method"])
+    try:
+        r64 = fit(z, F, tip.replace(arith="f64"), k_machine, arith="f64", **opts)
+    except Error as e:
+        raise Error(e.code, where, hint="f32 answered, but f64's fit of the same samples is refused (%s); use "
+                    "arith='f64'" % e.status) from None
+    wa64 = 0.0 if r64.w_adv is None else r64.w_adv
+    p32 = ffi.new("double[3]", [out["E"], out["w"], out["w_adv"] or 0.0])
+    e32 = ffi.new("double[3]", [out["E_err"], out["w_err"], out["w_adv_err"] or 0.0])
+    p64 = ffi.new("double[3]", [r64.E, r64.w, wa64])
+    which = ffi.new("int *")
+    off = lib.mdrpy_f32_fit_off(p32, e32, p64, 3 if opts["approach"] else 2, which)
+    if off > lib.mdrpy_f32_fit_max():
+        raise Error(lib.MDR_E_PARAM, where, hint="f32's %s is %.2g off f64's fit of the same samples (more than %g "
+                    "and 3 of its reported errors); use arith='f64'" % (("E*", "w", "w_adv")[which[0]], off,
+                                                                         lib.mdrpy_f32_fit_max()))
 
 
 def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach=False):

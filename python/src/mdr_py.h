@@ -125,6 +125,18 @@ double mdrpy_f32_eq_max(void);
 double mdrpy_f32_answer_max(void);
 double mdrpy_f32_slope_max(void);
 double mdrpy_f32_crit_max(void);
+/** The f32 fit's tolerance against f64's fit of the same samples
+ *  (MDR_HOST_F32_FIT_MAX). */
+double mdrpy_f32_fit_max(void);
+/**
+ * @brief How far an f32 fit lies from f64's fit of the same samples
+ *        (mdr_host_f32_fit_off, as `mdr fit --arith f32` checks it).
+ * @param p32 E*, w, w_adv of the f32 fit; e32 their reported errors; p64
+ *            f64's E*, w, w_adv; n 2 (E*, w) or 3 (with the approach)
+ * @param which set to 0 (E*), 1 (w), 2 (w_adv) or -1 (each within 3 errors)
+ * @return the largest relative difference beyond 3 reported errors, or 0
+ */
+double mdrpy_f32_fit_off(const double p32[3], const double e32[3], const double p64[3], int n, int *which);
 
 /**
  * @brief The CLI's two f32 checks of `eq` and `curve` over n points, from
