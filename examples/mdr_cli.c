@@ -828,8 +828,8 @@ static const char *const usage_cmd[NCMD] = {
     "  force curve z,F (CSV, --curve: JSON on stdout) or to every curve of a map\n"
     "  (curve,z,F, --map: CSV on stdout); tab- or space-separated files too. --jobs:\n"
     "  a map's threads. --arith: default f64; an f32 answer is refused where f64's fit of\n"
-    "  the same samples refuses them, or lies further from it than f32's goal and 3 of its\n"
-    "  errors (MDR_E_PARAM). See docs/fitting.md.\n",
+    "  the same samples refuses them, lies further from it than f32's goal and 3 of its errors,\n"
+    "  or reports an error 3 times below f64's (MDR_E_PARAM). See docs/fitting.md.\n",
 };
 
 /* --help anywhere, `mdr help [CMD]`, --version: 0, or -1 to go on */

@@ -50,7 +50,8 @@
  * each answer is checked against f64's fit of the same samples
  * (fit_check_f32): refused with f64's status where f64 refuses them, and
  * with MDR_E_PARAM where E*, w or w_adv lies further from f64's than
- * MDR_HOST_F32_FIT_MAX and 3 of its reported errors (a "hint" names it).
+ * MDR_HOST_F32_FIT_MAX and 3 of its reported errors, or reports an error
+ * below f64's by more than MDR_HOST_F32_FIT_ERR (a "hint" names it).
  * --map prints CSV curve,E,w,z0,F_base,mu,rms,status,E_err,w_err,F_slope
  * (the last three appended at stop 40: the columns before keep their
  * places), one row per curve in the input's order (status "ok" or the
@@ -86,6 +87,7 @@ typedef struct {
     uint8_t regime, method;
     /* --arith f32 refused against f64's fit of the same samples
      * (fit_check_f32): f32_which 0 E*, 1 w, 2 w_adv (f32_off: how far),
+     * 3 + those: its reported error too small (f32_off: f64's over it),
      * -2 f64 refuses them (st: f64's status); -1 not refused */
     int f32_which;
     double f32_off;
@@ -126,7 +128,9 @@ static int fit_scratch_grow(fit_scratch *s, size_t n, size_t elem)
  * as the CLI's other f32 answers are checked against f64's: refused where
  * f64 refuses the samples (o->st: f64's status) or where E*, w or w_adv
  * lies further from f64's than MDR_HOST_F32_FIT_MAX and 3 of its own
- * reported errors (mdr_host_f32_fit_off: MDR_E_PARAM) */
+ * reported errors (mdr_host_f32_fit_off), or its reported error lies below
+ * f64's by more than MDR_HOST_F32_FIT_ERR (mdr_host_f32_fit_err_low): then
+ * MDR_E_PARAM */
 static void fit_check_f32(const struct fit_args *A, const double *z, const double *F, size_t n, fit_scratch *s,
                           fit_res *o)
 {
@@ -141,13 +145,20 @@ static void fit_check_f32(const struct fit_args *A, const double *z, const doubl
         return;
     }
     {
-        const double p64[3] = {r.E, r.w, r.w_adv};
+        const double p64[3] = {r.E, r.w, r.w_adv}, e64[3] = {r.E_err, r.w_err, r.w_adv_err};
         off = mdr_host_f32_fit_off(p32, e32, p64, A->approach ? 3 : 2, &which);
-    }
-    if (off > MDR_HOST_F32_FIT_MAX) {
-        o->st = MDR_E_PARAM;
-        o->f32_which = which;
-        o->f32_off = off;
+        if (off > MDR_HOST_F32_FIT_MAX) {
+            o->st = MDR_E_PARAM;
+            o->f32_which = which;
+            o->f32_off = off;
+            return;
+        }
+        off = mdr_host_f32_fit_err_low(e32, e64, A->approach ? 3 : 2, &which);
+        if (off > MDR_HOST_F32_FIT_ERR) {
+            o->st = MDR_E_PARAM;
+            o->f32_which = 3 + which;
+            o->f32_off = off;
+        }
     }
 }
 
@@ -650,23 +661,24 @@ static int fit_curve_cmd(const struct fit_args *A)
         json_str(&j, "message", mdr_status_str(c.res.st));
         const double span = fit_span(c.z, c.n), fspan = fit_span(c.F, c.n);
         const int zs = span > FIT_SPAN_SI; /* z's span first, as before F's was checked */
-        char h[200];
-        if (c.res.f32_which == -2) {
-            (void)snprintf(h, sizeof h, "f32 answered, but f64's fit of the same samples is refused (%s): take "
-                                        "--arith f64",
-                           fit_status_name(c.res.st));
-            json_str(&j, "hint", h);
+        char h[200], h2[800];
+        const char *hs = NULL;
+        if (c.res.f32_which >= 3) {
+            (void)snprintf(h, sizeof h, "f32's reported error of %s is %.2g times below f64's for the same samples "
+                                        "(more than %g): take --arith f64",
+                           mdr_host_f32_fit_which(c.res.f32_which - 3), c.res.f32_off, MDR_HOST_F32_FIT_ERR);
+            hs = h;
         } else if (c.res.f32_which >= 0) {
             (void)snprintf(h, sizeof h, "f32's %s is %.2g off f64's fit of the same samples (more than %g and 3 of "
                                         "its reported errors): take --arith f64",
                            mdr_host_f32_fit_which(c.res.f32_which), c.res.f32_off, MDR_HOST_F32_FIT_MAX);
-            json_str(&j, "hint", h);
+            hs = h;
         } else if (zs || fspan > FIT_FSPAN_SI) {
             /* (nm or um taken for metres were refused with a diagnosis of
              * the curve's shape: MDR_E_DEGENERATE, MDR_E_PINNED; helper-56) */
             (void)snprintf(h, sizeof h, "%s spans %.3g %s: z and F must be in metres and newtons (SI), not nm, um "
                                         "or nN", zs ? "z" : "F", zs ? span : fspan, zs ? "m" : "N");
-            json_str(&j, "hint", h);
+            hs = h;
         } else if ((c.res.st == MDR_E_NOCONTACT || c.res.st == MDR_E_NOPULLOFF || c.res.st == MDR_E_FEW) &&
                    c.n > 0) {
             /* where the retract begins: an outlier above the top moves it
@@ -675,23 +687,33 @@ static int fit_curve_cmd(const struct fit_args *A)
             (void)snprintf(h, sizeof h, "the retract is the part from the largest z on: line %ld (z = %.9g m), "
                                         "%lu rows",
                            c.line[top], c.z[top], (unsigned long)(c.n - top));
-            json_str(&j, "hint", h);
+            hs = h;
         } else if (c.res.st == MDR_E_DEGENERATE && !A->flat && A->method == MDR_FIT_FULL) {
             /* the slope's price (docs/fitting.md): what the caller can do */
-            json_str(&j, "hint", "the baseline's slope is fitted too: give the whole free path of both "
-                                 "branches, or --flat-baseline where the slope is subtracted already");
+            hs = "the baseline's slope is fitted too: give the whole free path of both "
+                 "branches, or --flat-baseline where the slope is subtracted already";
         } else if (c.res.st == MDR_E_PINNED && A->unpinned) {
             /* the message's "state unpinned" is done: what is left */
-            json_str(&j, "hint", "with --unpinned: a line to the pull-off explains the retract better than a "
-                                 "receding branch (a contact pinned until it ruptures, or a branch straight "
-                                 "within the noise)");
+            hs = "with --unpinned: a line to the pull-off explains the retract better than a "
+                 "receding branch (a contact pinned until it ruptures, or a branch straight "
+                 "within the noise)";
         } else if (c.res.st == MDR_E_PINNED && A->approach) {
             /* the message's "fit with the approach" is done: what it found */
-            json_str(&j, "hint", "with --approach: the approach did not rule a pinned top out (its w_adv more "
-                                 "than 6 errors below w, adhesion hysteresis, or its own E* more than 3 errors "
-                                 "from the retract's), or the contact is pinned until it ruptures; the fit does "
-                                 "not model a pinned top the noise hides: a stiffer lever or less noise shows "
-                                 "where the retract recedes (docs/fitting.md)");
+            hs = "with --approach: the approach did not rule a pinned top out (its w_adv more "
+                 "than 6 errors below w, adhesion hysteresis, or its own E* more than 3 errors "
+                 "from the retract's), or the contact is pinned until it ruptures; the fit does "
+                 "not model a pinned top the noise hides: a stiffer lever or less noise shows "
+                 "where the retract recedes (docs/fitting.md)";
+        }
+        if (c.res.f32_which == -2) {
+            /* f64's own refusal and its hint: f32 alone answered */
+            (void)snprintf(h2, sizeof h2, "f32's fit answered, but f64's fit of the same samples refuses them (an f32 "
+                                          "answer is checked against f64's)%s%s",
+                           hs != NULL ? "; " : "", hs != NULL ? hs : "");
+            hs = h2;
+        }
+        if (hs != NULL) {
+            json_str(&j, "hint", hs);
         }
         json_key(&j, "status_code");
         printf("%d", (int)c.res.st);

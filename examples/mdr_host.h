@@ -480,6 +480,36 @@ static inline double mdr_host_f32_fit_off(const double p32[3], const double e32[
     return worst;
 }
 
+/** Above this ratio of f64's reported error to f32's, for the same samples,
+ *  an f32 fit's error of E*, w or w_adv is refused
+ *  (mdr_host_f32_fit_err_low()): the two fits see the same data, so their
+ *  errors agree (noisy curves, correct options: f32's over f64's 0.55 to
+ *  1.0 in 841 fits, stop 73); an f32 error far below f64's claims a
+ *  precision f32's answer lacks (helper-72: a noise-free curve with
+ *  hysteresis fitted --unpinned, w 0.0224563 +- 3.7e-8 in f32, 899 of its
+ *  errors from the truth, against +- 3.1e-5 in f64, status ok). */
+#define MDR_HOST_F32_FIT_ERR 3.0
+
+/* Of E*, w and (n = 3) w_adv, the largest ratio e64/e32 of f64's reported
+ * error to f32's for the same samples, and which (0 E*, 1 w, 2 w_adv) in
+ * *which (-1 and 0 where f32's is not below f64's). The CLI's `fit --arith
+ * f32` and the Python package's fit(arith="f32") refuse a ratio beyond
+ * MDR_HOST_F32_FIT_ERR. */
+static inline double mdr_host_f32_fit_err_low(const double e32[3], const double e64[3], int n, int *which)
+{
+    double worst = 0.0;
+    int k;
+    *which = -1;
+    for (k = 0; k < n && k < 3; k++) {
+        const double r = e64[k] / e32[k];
+        if (e64[k] > e32[k] && r > worst) {
+            worst = r;
+            *which = k;
+        }
+    }
+    return worst;
+}
+
 /* the name of mdr_host_f32_fit_off()'s which */
 static inline const char *mdr_host_f32_fit_which(int which)
 {

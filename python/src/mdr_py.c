@@ -54,6 +54,16 @@ double mdrpy_f32_fit_off(const double p32[3], const double e32[3], const double 
     return mdr_host_f32_fit_off(p32, e32, p64, n, which);
 }
 
+double mdrpy_f32_fit_err(void)
+{
+    return MDR_HOST_F32_FIT_ERR;
+}
+
+double mdrpy_f32_fit_err_low(const double e32[3], const double e64[3], int n, int *which)
+{
+    return mdr_host_f32_fit_err_low(e32, e64, n, which);
+}
+
 /* v held by float exactly (its rounding is v): where every input is, the
  * roundings are the values and mdr_host_f32_eq_change() is 0 */
 static int mdrpy_is_float(double v)

@@ -137,6 +137,12 @@ double mdrpy_f32_fit_max(void);
  * @return the largest relative difference beyond 3 reported errors, or 0
  */
 double mdrpy_f32_fit_off(const double p32[3], const double e32[3], const double p64[3], int n, int *which);
+/** The ratio of f64's reported error to f32's above which an f32 fit is
+ *  refused (MDR_HOST_F32_FIT_ERR), and that ratio's largest of E*, w, w_adv
+ *  (mdr_host_f32_fit_err_low: which as mdrpy_f32_fit_off's, -1 where f32's
+ *  errors are not below f64's). */
+double mdrpy_f32_fit_err(void);
+double mdrpy_f32_fit_err_low(const double e32[3], const double e64[3], int n, int *which);
 
 /**
  * @brief The CLI's two f32 checks of `eq` and `curve` over n points, from

@@ -655,7 +655,11 @@ def test_f32_checked_against_f64(tmp_path, cli):
     hysteresis, unpinned=True), where f32 answered w up to 1.2e-4 off f64's
     at more than 3 of its errors (helper-68's soft levers: 5 of them, status
     ok before), every f32 answer lies within F32FIT of the truth or within 3
-    of its reported errors (+1e-9 for f64's own), and some are refused."""
+    of its reported errors (+1e-9 for f64's own), and some are refused.
+    helper-72's noise-free curve with hysteresis fitted unpinned=True, whose
+    f32 w carried an error 850 times below f64's (899 of them from the
+    truth, status ok), is refused by the errors' rule; and where f64 refuses
+    the samples, f32 raises f64's status with f64's own hint kept."""
     args, seed = C1
     R, E, w, k = args[0], args[1], args[2], args[4]
     z, F, _ = jkr_curves.curve(*args, seed=seed)
@@ -669,6 +673,31 @@ def test_f32_checked_against_f64(tmp_path, cli):
     out = json.loads(p.stdout)
     assert p.returncode == 1 and out["status"] == "MDR_E_PARAM" and out["hint"].startswith(
         "f32's E* is 0.75 off f64's fit"), (p.returncode, out)
+    R, k = 8.377248503077025e-07, 0.01677082275550277
+    z, F, _ = jkr_curves.curve(R, 415255449.7851958, 0.02248944102271455, 0.011244720511357276, k, 1316,
+                               1.738912495578485, 0.34383488599545253, 0.0, Fb=0.3098147065989212, seed=29902250)
+    with pytest.raises(mdr.Error) as e:
+        mdr.fit(z, F, "paraboloid", R=R, k_machine=k, approach=True, unpinned=True, arith="f32")
+    assert e.value.status == "MDR_E_PARAM" and e.value.hint.startswith("f32's reported error of w is 8.5e+02 times "
+                                                                       "below f64's"), e.value
+    R, k = 8.211665647770888e-07, 31.40414001757029
+    z, F, _ = jkr_curves.curve(R, 38109889999.489235, 0.09566693357015627, 0.0717502001776172, k, 1113,
+                               2.626776472573501, 0.45854646783022457, 0.01, tilt=0.00013046814177155447,
+                               seed=591767725)
+    with pytest.raises(mdr.Error) as e64:
+        mdr.fit(z, F, "paraboloid", R=R, k_machine=k, approach=True)
+    with pytest.raises(mdr.Error) as e:
+        mdr.fit(z, F, "paraboloid", R=R, k_machine=k, approach=True, arith="f32")
+    assert e.value.status == e64.value.status == "MDR_E_PINNED" and e.value.hint == (
+        "f32's fit answered, but f64's fit of the same samples refuses them (an f32 answer is checked against "
+        "f64's); " + e64.value.hint), e.value
+    np.savetxt(path, np.column_stack([z, F]), delimiter=",", header="z,F", comments="", fmt="%.17g")
+    p = subprocess.run([cli, "fit", "--curve", str(path), "--profile", "paraboloid", "--R", repr(R), "--k-machine",
+                        repr(k), "--approach", "--arith", "f32"], capture_output=True, text=True)
+    out = json.loads(p.stdout)
+    assert p.returncode == 1 and out["status"] == "MDR_E_PINNED" and out["hint"].startswith(
+        "f32's fit answered, but f64's fit of the same samples refuses them (an f32 answer is checked against "
+        "f64's); with --approach: the approach did not rule"), (p.returncode, out)
     rng = np.random.default_rng(1)
     answered = refused = 0
     for i in range(60):
