@@ -136,7 +136,6 @@ static void fit_check_f32(const struct fit_args *A, const double *z, const doubl
 {
     fit_res r;
     const double p32[3] = {o->E, o->w, o->w_adv}, e32[3] = {o->E_err, o->w_err, o->w_adv_err};
-    double off;
     int which;
     memset(&r, 0, sizeof r);
     if (fit_run_f64(A, z, F, n, s, &r) != MDR_OK) {
@@ -146,7 +145,7 @@ static void fit_check_f32(const struct fit_args *A, const double *z, const doubl
     }
     {
         const double p64[3] = {r.E, r.w, r.w_adv}, e64[3] = {r.E_err, r.w_err, r.w_adv_err};
-        off = mdr_host_f32_fit_off(p32, e32, p64, A->approach ? 3 : 2, &which);
+        double off = mdr_host_f32_fit_off(p32, e32, p64, A->approach ? 3 : 2, &which);
         if (off > MDR_HOST_F32_FIT_MAX) {
             o->st = MDR_E_PARAM;
             o->f32_which = which;
