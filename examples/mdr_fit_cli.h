@@ -128,36 +128,33 @@ static int fit_scratch_grow(fit_scratch *s, size_t n, size_t elem)
  * as the CLI's other f32 answers are checked against f64's: refused where
  * f64 refuses the samples (o->st: f64's status) or where E*, w or w_adv
  * lies further from f64's than MDR_HOST_F32_FIT_MAX and 3 of its own
- * reported errors (mdr_host_f32_fit_off), or its reported error lies below
- * f64's by more than MDR_HOST_F32_FIT_ERR (mdr_host_f32_fit_err_low): then
- * MDR_E_PARAM */
+ * reported errors, or its reported error lies below f64's by more than
+ * MDR_HOST_F32_FIT_ERR (mdr_host_f32_fit_check): then MDR_E_PARAM */
 static void fit_check_f32(const struct fit_args *A, const double *z, const double *F, size_t n, fit_scratch *s,
                           fit_res *o)
 {
     fit_res r;
     const double p32[3] = {o->E, o->w, o->w_adv}, e32[3] = {o->E_err, o->w_err, o->w_adv_err};
-    int which;
+    int which, k;
+    double x;
+    mdr_status st;
     memset(&r, 0, sizeof r);
-    if (fit_run_f64(A, z, F, n, s, &r) != MDR_OK) {
-        o->st = r.st;
+    /* (the status from the return: an early refusal, the tip's or the
+     * scratch's, leaves r.st unset) */
+    st = fit_run_f64(A, z, F, n, s, &r);
+    if (st != MDR_OK) {
+        o->st = st;
         o->f32_which = -2;
         return;
     }
     {
         const double p64[3] = {r.E, r.w, r.w_adv}, e64[3] = {r.E_err, r.w_err, r.w_adv_err};
-        double off = mdr_host_f32_fit_off(p32, e32, p64, A->approach ? 3 : 2, &which);
-        if (off > MDR_HOST_F32_FIT_MAX) {
-            o->st = MDR_E_PARAM;
-            o->f32_which = which;
-            o->f32_off = off;
-            return;
-        }
-        off = mdr_host_f32_fit_err_low(e32, e64, A->approach ? 3 : 2, &which);
-        if (off > MDR_HOST_F32_FIT_ERR) {
-            o->st = MDR_E_PARAM;
-            o->f32_which = 3 + which;
-            o->f32_off = off;
-        }
+        k = mdr_host_f32_fit_check(p32, e32, p64, e64, A->approach ? 3 : 2, &which, &x);
+    }
+    if (k != 0) {
+        o->st = MDR_E_PARAM;
+        o->f32_which = k == 2 ? 3 + which : which;
+        o->f32_off = x;
     }
 }
 

@@ -462,8 +462,8 @@ static inline int mdr_host_crit64(const mdr_host_f32_eq_pair *x, uint8_t control
  * against f64's p64, the largest |p32 - p64|/|p64| (w_adv's over |w64|)
  * among those whose difference also exceeds 3 e32, and which one in *which
  * (0 E*, 1 w, 2 w_adv; -1 and 0 where every difference is within 3 of its
- * errors). The CLI's `fit --arith f32` and the Python package's
- * fit(arith="f32") refuse a value beyond MDR_HOST_F32_FIT_MAX. */
+ * errors); mdr_host_f32_fit_check() refuses a value beyond
+ * MDR_HOST_F32_FIT_MAX. */
 static inline double mdr_host_f32_fit_off(const double p32[3], const double e32[3], const double p64[3], int n,
                                           int *which)
 {
@@ -492,9 +492,8 @@ static inline double mdr_host_f32_fit_off(const double p32[3], const double e32[
 
 /* Of E*, w and (n = 3) w_adv, the largest ratio e64/e32 of f64's reported
  * error to f32's for the same samples, and which (0 E*, 1 w, 2 w_adv) in
- * *which (-1 and 0 where f32's is not below f64's). The CLI's `fit --arith
- * f32` and the Python package's fit(arith="f32") refuse a ratio beyond
- * MDR_HOST_F32_FIT_ERR. */
+ * *which (-1 and 0 where f32's is not below f64's);
+ * mdr_host_f32_fit_check() refuses a ratio beyond MDR_HOST_F32_FIT_ERR. */
 static inline double mdr_host_f32_fit_err_low(const double e32[3], const double e64[3], int n, int *which)
 {
     double worst = 0.0;
@@ -510,7 +509,27 @@ static inline double mdr_host_f32_fit_err_low(const double e32[3], const double 
     return worst;
 }
 
-/* the name of mdr_host_f32_fit_off()'s which */
+/* The f32 fit's check against f64's fit of the same samples, the one rule
+ * of the CLI's `fit --arith f32` and the Python package's
+ * fit(arith="f32"): of E*, w and (n = 3) w_adv, p32 and e32 the f32
+ * answer and its reported errors, p64 and e64 f64's. 0: the answer
+ * stands; 1: a value lies beyond MDR_HOST_F32_FIT_MAX and 3 of its errors
+ * from f64's (mdr_host_f32_fit_off: *x the relative difference); 2: an
+ * error lies below f64's by more than MDR_HOST_F32_FIT_ERR
+ * (mdr_host_f32_fit_err_low: *x the ratio). *which: 0 E*, 1 w, 2 w_adv
+ * (mdr_host_f32_fit_which names it). */
+static inline int mdr_host_f32_fit_check(const double p32[3], const double e32[3], const double p64[3],
+                                         const double e64[3], int n, int *which, double *x)
+{
+    *x = mdr_host_f32_fit_off(p32, e32, p64, n, which);
+    if (*x > MDR_HOST_F32_FIT_MAX) {
+        return 1;
+    }
+    *x = mdr_host_f32_fit_err_low(e32, e64, n, which);
+    return *x > MDR_HOST_F32_FIT_ERR ? 2 : 0;
+}
+
+/* the name of mdr_host_f32_fit_check()'s which */
 static inline const char *mdr_host_f32_fit_which(int which)
 {
     return which == 0 ? "E*" : which == 1 ? "w" : "w_adv";

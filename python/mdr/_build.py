@@ -125,9 +125,10 @@ double mdrpy_f32_answer_max(void);
 double mdrpy_f32_slope_max(void);
 double mdrpy_f32_crit_max(void);
 double mdrpy_f32_fit_max(void);
-double mdrpy_f32_fit_off(const double p32[3], const double e32[3], const double p64[3], int n, int *which);
 double mdrpy_f32_fit_err(void);
-double mdrpy_f32_fit_err_low(const double e32[3], const double e64[3], int n, int *which);
+int mdrpy_f32_fit_check(const double p32[3], const double e32[3], const double p64[3], const double e64[3], int n,
+                        int *which, double *x);
+const char *mdrpy_f32_fit_which(int which);
 double mdrpy_f32_crit_wrong(uint8_t kind, const double p[3], const double *r, const double *s, uint16_t m, double E,
                             double w, uint8_t control, double k_m, const double *a0, double a32, double d32, double F32,
                             double Fm32);

@@ -204,7 +204,7 @@ def fit(z, F, c_or_profile, k_machine, *, method="full", z_e=None, arith="f64", 
 
 def _check_f32(out, z, F, tip, k_machine, **opts):
     """An f32 answer against f64's fit of the same samples, as `mdr fit
-    --arith f32` checks it (mdr_host_f32_fit_off, one rule for both): f64
+    --arith f32` checks it (mdr_host_f32_fit_check, one rule for both): f64
     refusing the samples raises its status; E*, w or w_adv further from
     f64's than mdrpy_f32_fit_max() (5e-5) and 3 of the f32 answer's own
     reported errors, or an error of theirs reported more than
@@ -217,23 +217,19 @@ def _check_f32(out, z, F, tip, k_machine, **opts):
         raise Error(e.code, where, index=e.index, value=e.value,
                     hint="f32's fit answered, but f64's fit of the same samples refuses them (an f32 answer is "
                     "checked against f64's)" + ("; " + e.hint if e.hint else "")) from None
-    wa64 = 0.0 if r64.w_adv is None else r64.w_adv
     p32 = ffi.new("double[3]", [out["E"], out["w"], out["w_adv"] or 0.0])
     e32 = ffi.new("double[3]", [out["E_err"], out["w_err"], out["w_adv_err"] or 0.0])
-    p64 = ffi.new("double[3]", [r64.E, r64.w, wa64])
-    which = ffi.new("int *")
-    nq = 3 if opts["approach"] else 2
-    off = lib.mdrpy_f32_fit_off(p32, e32, p64, nq, which)
-    if off > lib.mdrpy_f32_fit_max():
+    p64 = ffi.new("double[3]", [r64.E, r64.w, r64.w_adv or 0.0])
+    e64 = ffi.new("double[3]", [r64.E_err, r64.w_err, r64.w_adv_err or 0.0])
+    which, x = ffi.new("int *"), ffi.new("double *")
+    k = lib.mdrpy_f32_fit_check(p32, e32, p64, e64, 3 if opts["approach"] else 2, which, x)
+    name = ffi.string(lib.mdrpy_f32_fit_which(which[0])).decode()
+    if k == 1:
         raise Error(lib.MDR_E_PARAM, where, hint="f32's %s is %.2g off f64's fit of the same samples (more than %g "
-                    "and 3 of its reported errors); use arith='f64'" % (("E*", "w", "w_adv")[which[0]], off,
-                                                                         lib.mdrpy_f32_fit_max()))
-    e64 = ffi.new("double[3]", [r64.E_err, r64.w_err, 0.0 if r64.w_adv_err is None else r64.w_adv_err])
-    low = lib.mdrpy_f32_fit_err_low(e32, e64, nq, which)
-    if low > lib.mdrpy_f32_fit_err():
+                    "and 3 of its reported errors); use arith='f64'" % (name, x[0], lib.mdrpy_f32_fit_max()))
+    if k == 2:
         raise Error(lib.MDR_E_PARAM, where, hint="f32's reported error of %s is %.2g times below f64's for the same "
-                    "samples (more than %g); use arith='f64'" % (("E*", "w", "w_adv")[which[0]], low,
-                                                                lib.mdrpy_f32_fit_err()))
+                    "samples (more than %g); use arith='f64'" % (name, x[0], lib.mdrpy_f32_fit_err()))
 
 
 def _fit_error(st, z, F, i, method, arith, slope=False, unpinned=False, approach=False):

@@ -49,19 +49,20 @@ double mdrpy_f32_fit_max(void)
     return MDR_HOST_F32_FIT_MAX;
 }
 
-double mdrpy_f32_fit_off(const double p32[3], const double e32[3], const double p64[3], int n, int *which)
-{
-    return mdr_host_f32_fit_off(p32, e32, p64, n, which);
-}
-
 double mdrpy_f32_fit_err(void)
 {
     return MDR_HOST_F32_FIT_ERR;
 }
 
-double mdrpy_f32_fit_err_low(const double e32[3], const double e64[3], int n, int *which)
+int mdrpy_f32_fit_check(const double p32[3], const double e32[3], const double p64[3], const double e64[3], int n,
+                        int *which, double *x)
 {
-    return mdr_host_f32_fit_err_low(e32, e64, n, which);
+    return mdr_host_f32_fit_check(p32, e32, p64, e64, n, which, x);
+}
+
+const char *mdrpy_f32_fit_which(int which)
+{
+    return mdr_host_f32_fit_which(which);
 }
 
 /* v held by float exactly (its rounding is v): where every input is, the

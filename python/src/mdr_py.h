@@ -125,24 +125,24 @@ double mdrpy_f32_eq_max(void);
 double mdrpy_f32_answer_max(void);
 double mdrpy_f32_slope_max(void);
 double mdrpy_f32_crit_max(void);
-/** The f32 fit's tolerance against f64's fit of the same samples
- *  (MDR_HOST_F32_FIT_MAX). */
+/** The f32 fit's tolerances against f64's fit of the same samples
+ *  (MDR_HOST_F32_FIT_MAX: a value's relative difference; MDR_HOST_F32_FIT_ERR:
+ *  the ratio of f64's reported error to f32's). */
 double mdrpy_f32_fit_max(void);
-/**
- * @brief How far an f32 fit lies from f64's fit of the same samples
- *        (mdr_host_f32_fit_off, as `mdr fit --arith f32` checks it).
- * @param p32 E*, w, w_adv of the f32 fit; e32 their reported errors; p64
- *            f64's E*, w, w_adv; n 2 (E*, w) or 3 (with the approach)
- * @param which set to 0 (E*), 1 (w), 2 (w_adv) or -1 (each within 3 errors)
- * @return the largest relative difference beyond 3 reported errors, or 0
- */
-double mdrpy_f32_fit_off(const double p32[3], const double e32[3], const double p64[3], int n, int *which);
-/** The ratio of f64's reported error to f32's above which an f32 fit is
- *  refused (MDR_HOST_F32_FIT_ERR), and that ratio's largest of E*, w, w_adv
- *  (mdr_host_f32_fit_err_low: which as mdrpy_f32_fit_off's, -1 where f32's
- *  errors are not below f64's). */
 double mdrpy_f32_fit_err(void);
-double mdrpy_f32_fit_err_low(const double e32[3], const double e64[3], int n, int *which);
+/**
+ * @brief The f32 fit's check against f64's fit of the same samples
+ *        (mdr_host_f32_fit_check, as `mdr fit --arith f32` makes it).
+ * @param p32 E*, w, w_adv of the f32 fit; e32 their reported errors; p64,
+ *            e64 f64's; n 2 (E*, w) or 3 (with the approach)
+ * @param which set to 0 (E*), 1 (w) or 2 (w_adv): the one refused
+ * @param x set to the relative difference (1) or the errors' ratio (2)
+ * @return 0 the answer stands, 1 a value off f64's, 2 an error too small
+ */
+int mdrpy_f32_fit_check(const double p32[3], const double e32[3], const double p64[3], const double e64[3], int n,
+                        int *which, double *x);
+/** The name of mdrpy_f32_fit_check()'s which ("E*", "w", "w_adv"). */
+const char *mdrpy_f32_fit_which(int which);
 
 /**
  * @brief The CLI's two f32 checks of `eq` and `curve` over n points, from
