@@ -454,6 +454,16 @@ static float work32[2 * NMAX];
 static double zs[NMAX], Fs[NMAX], Fm[NMAX];
 static float zs32[NMAX], Fs32[NMAX];
 
+/* the curve's first n points zs, Fs rounded to float, into zs32, Fs32 */
+static void curve32(int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        zs32[i] = (float)zs[i];
+        Fs32[i] = (float)Fs[i];
+    }
+}
+
 /* the regimes: mu = 450 (JKR: a soft gel on a 1 um sphere), 1.2
  * (transition: 20 nm tip on a polymer), 0.016 (DMT: 10 nm tip on a hard
  * solid); k_m comparable to the contact's stiffness */
@@ -617,11 +627,8 @@ static void test_roundtrip_f32(void **state)
         mdr_fit_result_f32 r;
         float pp[3] = {(float)p->R, 0, 0};
         double Fpo, z0 = 40e-9, Fb = 0.2 * fabs(p->w * p->R);
-        int i, n = 1000, last = jkr_curve(p, z0, Fb, n, zs, Fs, 0, &Fpo);
-        for (i = 0; i < n; i++) {
-            zs32[i] = (float)zs[i];
-            Fs32[i] = (float)Fs[i];
-        }
+        int n = 1000, last = jkr_curve(p, z0, Fb, n, zs, Fs, 0, &Fpo);
+        curve32(n);
         assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
         mdr_fit_defaults_f32(&o, (float)p->km);
         assert_int_equal(mdr_fit_curve_f32(&c, &o, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r), MDR_OK);
@@ -649,11 +656,43 @@ static void test_roundtrip_f32(void **state)
  * level and is not the fix). Before the fix (mdr_fit.inc, mdr_f_solve)
  * MDR_E_RADIUS in both arithmetics. Host only (not timed on the target). */
 #ifndef MDR_TARGET_TEST
+enum { LAST_M = 401 };
+
+/* the first R j/8 (j = 32 .. 255) whose square root squares back above it
+ * in the arithmetic (f32: float), or 0 */
+static double radius_past_sqrt(double R, int f32)
+{
+    int j;
+    for (j = 32; j < 256; j++) {
+        const double x = R * j / 8, t = sqrt(x);
+        const float x32 = (float)x, t32 = sqrtf(x32);
+        if (f32 ? t32 * t32 > x32 : t * t > x) {
+            return f32 ? (double)x32 : x;
+        }
+    }
+    return 0.0;
+}
+
+/* the paraboloid f = r^2/(2R) sampled at LAST_M radii to x (f32: each
+ * radius rounded to float), and the slopes (f_i+1 - f_i)/h of its
+ * intervals (0 past the last) */
+static void last_radius_table(double R, double x, int f32, double *r, double *sl)
+{
+    int i;
+    for (i = 0; i < LAST_M; i++) {
+        r[i] = i == LAST_M - 1 ? x : x * i / (LAST_M - 1);
+        r[i] = f32 ? (double)(float)r[i] : r[i];
+    }
+    for (i = 0; i + 1 < LAST_M; i++) {
+        sl[i] = (r[i] + r[i + 1]) / (2 * R);
+    }
+    sl[LAST_M - 1] = 0;
+}
+
 static void test_table_last_radius(void **state)
 {
-    enum { M = 401 };
-    static double tr[M], ts[M];
-    static float tr32[M], ts32[M];
+    static double tr[LAST_M], ts[LAST_M];
+    static float tr32[LAST_M], ts32[LAST_M];
     int k;
     (void)state;
     worst = 0;
@@ -665,49 +704,24 @@ static void test_table_last_radius(void **state)
         mdr_fit_opts_f32 o32;
         mdr_fit_result_f64 r;
         mdr_fit_result_f32 r32;
-        double Fpo, z0 = 40e-9, Fb = 0.2 * fabs(p->w * p->R), x = 0, t;
-        float x32 = 0, t32;
-        int i, j, n = 300, last = jkr_curve(p, z0, Fb, n, zs, Fs, 0, &Fpo);
-        for (j = 32; j < 256; j++) {
-            x = p->R * j / 8;
-            t = sqrt(x);
-            if (t * t > x) {
-                break;
-            }
-        }
-        assert_true(j < 256);
-        for (i = 0; i < M; i++) {
-            tr[i] = i == M - 1 ? x : x * i / (M - 1);
-        }
-        for (i = 0; i + 1 < M; i++) {
-            ts[i] = (tr[i] + tr[i + 1]) / (2 * p->R); /* (f_i+1 - f_i)/h of f = r^2/(2R) */
-        }
-        ts[M - 1] = 0;
-        assert_int_equal(mdr_contact_init_table_f64(&c, tr, ts, M, 1.0, 0.0), MDR_OK);
+        double Fpo, z0 = 40e-9, Fb = 0.2 * fabs(p->w * p->R), x = radius_past_sqrt(p->R, 0);
+        int i, n = 300, last = jkr_curve(p, z0, Fb, n, zs, Fs, 0, &Fpo);
+        assert_true(x > 0);
+        last_radius_table(p->R, x, 0, tr, ts);
+        assert_int_equal(mdr_contact_init_table_f64(&c, tr, ts, LAST_M, 1.0, 0.0), MDR_OK);
         mdr_fit_defaults_f64(&o, p->km);
         assert_int_equal(mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r), MDR_OK);
         check_fit64(&r, p->E, p->w, z0, Fb, zs[0] - zs[last], fabs(Fpo), TOL_RT, "table to r_max (f64)");
         /* f32: its own r_max */
-        for (j = 32; j < 256; j++) {
-            x32 = (float)(p->R * j / 8);
-            t32 = sqrtf(x32);
-            if (t32 * t32 > x32) {
-                break;
-            }
+        x = radius_past_sqrt(p->R, 1);
+        assert_true(x > 0);
+        last_radius_table(p->R, x, 1, tr, ts);
+        for (i = 0; i < LAST_M; i++) {
+            tr32[i] = (float)tr[i];
+            ts32[i] = (float)ts[i];
         }
-        assert_true(j < 256);
-        for (i = 0; i < M; i++) {
-            tr32[i] = i == M - 1 ? x32 : (float)((double)x32 * i / (M - 1));
-        }
-        for (i = 0; i + 1 < M; i++) {
-            ts32[i] = (float)(((double)tr32[i] + (double)tr32[i + 1]) / (2 * p->R));
-        }
-        ts32[M - 1] = 0;
-        for (i = 0; i < n; i++) {
-            zs32[i] = (float)zs[i];
-            Fs32[i] = (float)Fs[i];
-        }
-        assert_int_equal(mdr_contact_init_table_f32(&c32, tr32, ts32, M, 1.0f, 0.0f), MDR_OK);
+        curve32(n);
+        assert_int_equal(mdr_contact_init_table_f32(&c32, tr32, ts32, LAST_M, 1.0f, 0.0f), MDR_OK);
         mdr_fit_defaults_f32(&o32, (float)p->km);
         assert_int_equal(mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r32), MDR_OK);
         track(r32.E, p->E, 0, TOL_RT32, "table to r_max (f32): E");
@@ -753,16 +767,12 @@ static const double soft32[][4] = { /* E*, w, k_m, samples */
 static int soft32_fit(const jkr_par *p, int n, int *ok, int print)
 {
     double Fpo;
-    int i;
     mdr_contact_f32 c;
     mdr_fit_opts_f32 o;
     mdr_fit_result_f32 r;
     float pp[3] = {20e-9f, 0, 0};
     jkr_curve(p, 40e-9, 0.0, n, zs, Fs, 0, &Fpo);
-    for (i = 0; i < n; i++) {
-        zs32[i] = (float)zs[i];
-        Fs32[i] = (float)Fs[i];
-    }
+    curve32(n);
     assert_int_equal(mdr_contact_init_f32(&c, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
     mdr_fit_defaults_f32(&o, (float)p->km);
     if (mdr_fit_curve_f32(&c, &o, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r) != MDR_OK) {
@@ -1605,15 +1615,11 @@ static void expect_fail_both(double R, double km, uint32_t n, mdr_status want, c
     mdr_fit_opts_f32 o32;
     mdr_fit_result_f32 r32;
     const float pp[3] = {(float)R, 0, 0};
-    uint32_t i;
     assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
     mdr_fit_defaults_f64(&o, km);
     mdr_fit_defaults_f32(&o32, (float)km);
     expect_fail(&c, &o, zs, Fs, n, 2 * NMAX, want, what);
-    for (i = 0; i < n; i++) {
-        zs32[i] = (float)zs[i];
-        Fs32[i] = (float)Fs[i];
-    }
+    curve32(n);
     assert_int_equal(mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, n, work32, 2 * NMAX, &r32), want);
 }
 
@@ -1997,15 +2003,11 @@ static void fit_both(const jkr_par *p, uint32_t n, int approach, mdr_status *st6
     mdr_fit_result_f64 r;
     mdr_fit_result_f32 r32;
     const float pp[3] = {(float)p->R, 0, 0};
-    uint32_t i;
     assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
     mdr_fit_defaults_f64(&o, p->km);
     mdr_fit_defaults_f32(&o32, (float)p->km);
     o.approach = o32.approach = (uint8_t)approach;
-    for (i = 0; i < n; i++) {
-        zs32[i] = (float)zs[i];
-        Fs32[i] = (float)Fs[i];
-    }
+    curve32(n);
     *st64 = mdr_fit_curve_f64(&c, &o, zs, Fs, n, work64, 2 * NMAX, &r);
     *st32 = mdr_fit_curve_f32(&c32, &o32, zs32, Fs32, n, work32, 2 * NMAX, &r32);
 }
@@ -2619,7 +2621,7 @@ static void flaw_run1(const char *what, flaw_fn flaw, int nflaw, int nseed, doub
     mdr_contact_f32 c32;
     const float pp[3] = {(float)p.R, 0, 0};
     const uint64_t saved = noise_state;
-    int k, s, i, bad = 0, ok0 = 0, refused = 0;
+    int k, s, bad = 0, ok0 = 0, refused = 0;
     double worst_k = 0.0;
     assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
     noise_state = 0x3c6ef372fe94f82bull;
@@ -2634,10 +2636,7 @@ static void flaw_run1(const char *what, flaw_fn flaw, int nflaw, int nseed, doub
             if (arith32) {
                 mdr_fit_opts_f32 o32;
                 mdr_fit_result_f32 r32;
-                for (i = 0; i < n; i++) {
-                    zs32[i] = (float)zs[i];
-                    Fs32[i] = (float)Fs[i];
-                }
+                curve32(n);
                 mdr_fit_defaults_f32(&o32, (float)p.km);
                 o32.unpinned = 1;
                 o32.flat = (uint8_t)flat;
