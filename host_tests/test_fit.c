@@ -11,9 +11,7 @@
  * Monte Carlo has NMC = 6 copies and the refusal sweeps are thinned
  * (NREV_SIZES and the rest below NMAX); the tolerances are the same or
  * derived from NMC; four statistical tests of f64 alone run on the host
- * only (TARGET_F64 below). The closed-form curves' bisections (jkr_fold,
- * jkr_a) stop there at their fixed point, the same bits as the host's 400
- * steps.
+ * only (TARGET_F64 below).
  *
  * Tolerances (relative unless said):
  *   TOL_MODEL = 1e-11: the library's forward model against the closed form,
@@ -316,20 +314,16 @@ static double jkr_fold(const jkr_par *p)
     }
     for (i = 0; i < 400; i++) {
         double mid = sqrt(lo * hi);
-#ifdef MDR_TARGET_TEST
         const double lo_was = lo, hi_was = hi;
-#endif
         jkr_z(p, mid, NULL, &dz);
         if (dz > 0) {
             hi = mid;
         } else {
             lo = mid;
         }
-#ifdef MDR_TARGET_TEST
         if (lo == lo_was && hi == hi_was) {
-            break; /* the target: a fixed point, the 400 steps' answer (jkr_a) */
+            break; /* a fixed point: the 400 steps' answer (jkr_a) */
         }
-#endif
     }
     return hi;
 }
@@ -344,25 +338,21 @@ static double jkr_a(const jkr_par *p, double zp, double af)
     }
     for (i = 0; i < 400; i++) {
         double mid = 0.5 * (lo + hi);
-#ifdef MDR_TARGET_TEST
         const double lo_was = lo, hi_was = hi;
-#endif
         if (jkr_z(p, mid, NULL, NULL) > zp) {
             hi = mid;
         } else {
             lo = mid;
         }
-#ifdef MDR_TARGET_TEST
         /* a step that left lo and hi as they were leaves them so for every
-         * later step (each a function of lo, hi alone): the host's 400 steps
-         * end on the same bits. The target stops there, after some 60 steps
-         * (the closed-form curves in soft double: test_fit on the M4F 159
-         * -> 117 s with the same output, test_two_point_errors 14 -> 4 s,
-         * test_refuse_units 16.5 -> 10.6); the host runs all 400 */
+         * later step (each a function of lo, hi alone): the 400 steps end
+         * on the same bits, so the bisection stops there, after some 60
+         * steps (the closed-form curves in soft double: test_fit on the M4F
+         * 159 -> 117 s with the same output, test_two_point_errors 14 -> 4 s,
+         * test_refuse_units 16.5 -> 10.6; the host's output the same) */
         if (lo == lo_was && hi == hi_was) {
             break;
         }
-#endif
     }
     return 0.5 * (lo + hi);
 }
