@@ -2113,6 +2113,101 @@ static void scene_zeroed(void **state)
     assert_true(o32.F == 0.0f);
 }
 
+/* A slow retraction toward the pull-off, one LSB of the control a tick
+ * (helper-74): on every such tick the f64 scene recedes, and the q31 scene
+ * made from it, at the same raw control, gives a d within the f64 scene's
+ * own spread over one LSB of the control (f64's d at raw - 1 from the
+ * state before the tick, and that state's, at raw + 1) and TOL_Q31_SPREAD
+ * LSB of D0, but for the last TOL_Q31_FOLD_LSB before the fold. Near the
+ * fold one LSB of the control moves the edge far (here up to 9 000 LSB of
+ * d), and where the slow path's move recomputed the band's end from the
+ * rounded edge (an LSB beyond the control), the next tick held the edge
+ * where it recedes, d moved along the pinned line instead: 120 LSB of D0
+ * beyond f64's spread (13 ticks held), MDR_OK, no flag (the helper's cycle
+ * of this cone: 4 279 LSB of D0 off the f64 scene at the same control).
+ * Scenes whose pull-off is resolved to a few thousand LSB of the control
+ * (a_max 3.8 times the cycle's largest radius): a cone under load and a
+ * power law n = 3 through a machine, the helper's; approach to 58 times
+ * the fold's control, retract to 0.985 of it, then one LSB a tick to the
+ * pull-off. */
+#define TOL_Q31_SPREAD 8.0  /* LSB of D0 beyond f64's spread [measured 0; 120 before] */
+#define TOL_Q31_FOLD_LSB 4 /* the last LSB of the control before the fold, where U's rounding
+                              (MDR_S_UTOL) decides: not compared [there 13 LSB of D0] */
+static void scene_q31_slow_recede(void **state)
+{
+    static const struct {
+        uint8_t kind, ctl;
+        double p0, n, E, w, wadv, km, amax;
+    } cs[] = {
+        {MDR_PROFILE_CONE, MDR_CONTROL_LOAD, 0.97797550030657299, 0, 71677417.801328987, 0.0013997867144185145,
+         0.00044450683308676256, 0.0, 1.0455577881926018e-09},
+        {MDR_PROFILE_POWERLAW, MDR_CONTROL_MACHINE, 20159997182256.438, 3, 4768231380.1649618, 0.0021231243243786556,
+         0.0016985702512746024, 65.538197386957009, 1.5337201626124437e-07},
+    };
+    unsigned k;
+    (void)state;
+    for (k = 0; k < sizeof cs / sizeof cs[0]; k++) {
+        const double p[3] = {cs[k].p0, cs[k].n, 0};
+        const int ctl = cs[k].ctl;
+        mdr_contact_f64 c;
+        mdr_scene_f64 s;
+        mdr_scene_q31 q;
+        double D0, unit, lsb_d, worst = 0.0;
+        int32_t raw_f, raw, mid;
+        int i, slow = 0, moved = 0, po = 0, jd, held = 0;
+        assert_int_equal(mdr_contact_init_f64(&c, cs[k].kind, p, cs[k].E, cs[k].w), MDR_OK);
+        assert_int_equal(mdr_scene_init_contact_f64(&s, &c, cs[k].wadv, cs[k].km, MDR_OUT_ALL, NULL), MDR_OK);
+        assert_int_equal(mdr_scene_init_q31_f64(&q, &s, cs[k].amax), MDR_OK);
+        /* the units exactly (the float fields are rounded): D0 = D_s 2^j,
+         * F0 = F_s (L/a_s) 2^j with L/a_s a power of 4, Z0 = 2^sz D0 */
+        jd = (int)lround(log2((double)q.D0 / s.Ds));
+        D0 = ldexp(s.Ds, jd);
+        lsb_d = D0 / 536870912.0;
+        unit = ctl == MDR_CONTROL_LOAD ? ldexp(s.Fs, jd + (int)lround(log2((double)q.L / s.as))) / 536870912.0
+                                       : D0 * q.z_mul / 536870912.0;
+        raw_f = (int32_t)lround((ctl == MDR_CONTROL_LOAD ? s.uf[0] * s.Fs : s.uf[2] * s.Ds) / unit);
+        mid = (int32_t)lround(0.985 * raw_f);
+        for (i = 0; !po; i++) {
+            mdr_scene_f64 prev = s, alt;
+            const mdr_scene_q31 qprev = q;
+            mdr_step_f64 o, oa;
+            mdr_step_q31 oq;
+            raw = i <= 2000   ? (int32_t)lround(-58.0 * raw_f * i / 2000)
+                  : i <= 3000 ? (int32_t)lround(-58.0 * raw_f + (mid + 58.0 * raw_f) * (i - 2000) / 1000)
+                              : mid - (i - 3000);
+            assert_true(i < 3000 + 2 * (mid - raw_f) + 100);
+            assert_int_equal(step_scene64(&s, ctl, raw * unit, &o), MDR_OK);
+            assert_int_equal(ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&q, raw, &oq)
+                                                     : mdr_scene_step_z_q31(&q, raw, &oq),
+                             MDR_OK);
+            assert_int_equal(q.flags, 0);
+            po = o.event == MDR_EV_PULL_OFF || oq.event == MDR_EV_PULL_OFF;
+            if (i <= 3000 || po) {
+                continue;
+            }
+            /* a tick of the slow retraction, both in contact */
+            alt = prev;
+            assert_int_equal(step_scene64(&alt, ctl, (raw - 1) * unit, &oa), MDR_OK);
+            slow++;
+            if (s.tau < prev.tau) {
+                moved++;
+                held += !(q.tau < qprev.tau);
+            }
+            if (raw - raw_f > TOL_Q31_FOLD_LSB) {
+                const double dq = oq.d * lsb_d, lo = fmin(oa.d, prev.d), hi = fmax(oa.d, prev.d);
+                const double ex = (dq < lo ? lo - dq : dq > hi ? dq - hi : 0.0) / lsb_d;
+                worst = fmax(worst, ex);
+                assert_true(ex <= TOL_Q31_SPREAD);
+            }
+        }
+        printf("  q31 scene, slow retraction (%s): %d ticks of one LSB, f64 receded on %d, q31 held its edge on %d "
+               "of them; d beyond f64's spread over one LSB %.1f LSB of D0 (tolerance %.0f)\n",
+               ctl == MDR_CONTROL_LOAD ? "load, cone" : "machine, power law n = 3", slow, moved, held, worst,
+               TOL_Q31_SPREAD);
+        assert_true(slow >= 40 && moved == slow);
+    }
+}
+
 static void scene_q31_errors(void **state)
 {
     mdr_scene_f64 s;
@@ -2249,6 +2344,7 @@ int main(void)
         cmocka_unit_test(scene_q31_load_fold_unresolved),
         cmocka_unit_test(scene_q31_adhesion_range),
         cmocka_unit_test(scene_q31_pull_at_range_end),
+        cmocka_unit_test(scene_q31_slow_recede),
         cmocka_unit_test(scene_q31_errors),
         cmocka_unit_test(scene_zeroed),
 #endif
