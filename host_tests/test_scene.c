@@ -166,6 +166,13 @@ static mdr_status step_scene32(mdr_scene_f32 *s, int ctl, float u, mdr_step_f32 
 }
 
 #if MDR_CFG_Q31
+static mdr_status step_scene_q31(mdr_scene_q31 *s, int ctl, int32_t u, mdr_step_q31 *o)
+{
+    return ctl == MDR_CONTROL_LOAD    ? mdr_scene_step_F_q31(s, u, o)
+           : ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(s, u, o)
+                                      : mdr_scene_step_z_q31(s, u, o);
+}
+
 /* One tick of a q31 scene under grips or load at the raw control nearest u
  * (unit: its LSB in SI) and of the f64 scene it was made from at that same
  * control (o: the f64 scene's output) */
@@ -174,8 +181,7 @@ static void step_q31_pair(mdr_scene_f64 *r64, mdr_scene_q31 *q, int ctl, double 
     const int32_t raw = (int32_t)lround(u / unit);
     mdr_step_q31 oq;
     assert_int_equal(step_scene64(r64, ctl, raw * unit, o), MDR_OK);
-    assert_int_equal(ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(q, raw, &oq) : mdr_scene_step_F_q31(q, raw, &oq),
-                     MDR_OK);
+    assert_int_equal(step_scene_q31(q, ctl, raw, &oq), MDR_OK);
 }
 #endif
 
@@ -439,9 +445,7 @@ static void scene_jkr_pull_off(void **state)
 #if MDR_CFG_Q31
             {
                 const int32_t raw = (int32_t)lround(path(i, umax, umin) / unit);
-                assert_int_equal(ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, raw, &oq)
-                                                          : mdr_scene_step_F_q31(&q, raw, &oq),
-                                 MDR_OK);
+                assert_int_equal(step_scene_q31(&q, ctl, raw, &oq), MDR_OK);
                 if (oq.event == MDR_EV_PULL_OFF) {
                     const double lsb = q.F0 / 536870912.0, err = fabs(oq.F0 * lsb - want) / lsb;
                     printf("  q31 control %d: pull-off F0 %.9e, %.2f LSB from JKR\n", ctl, oq.F0 * lsb, err);
@@ -1623,16 +1627,8 @@ static double q31_cycle(uint8_t kind, double p0, double p1, int ctl, double k_m)
         mdr_step_f64 o;
         mdr_step_q31 oq;
         double ed, eF;
-        if (ctl == MDR_CONTROL_GRIPS) {
-            assert_int_equal(mdr_scene_step_d_f64(&s, raw * unit, &o), MDR_OK);
-            assert_int_equal(mdr_scene_step_d_q31(&q, raw, &oq), MDR_OK);
-        } else if (ctl == MDR_CONTROL_LOAD) {
-            assert_int_equal(mdr_scene_step_F_f64(&s, raw * unit, &o), MDR_OK);
-            assert_int_equal(mdr_scene_step_F_q31(&q, raw, &oq), MDR_OK);
-        } else {
-            assert_int_equal(mdr_scene_step_z_f64(&s, raw * unit, &o), MDR_OK);
-            assert_int_equal(mdr_scene_step_z_q31(&q, raw, &oq), MDR_OK);
-        }
+        assert_int_equal(step_scene64(&s, ctl, raw * unit, &o), MDR_OK);
+        assert_int_equal(step_scene_q31(&q, ctl, raw, &oq), MDR_OK);
         assert_int_equal(o.event, oq.event);
         ed = fabs(oq.d * (q.D0 / 536870912.0) - o.d);
         eF = fabs(oq.F * (q.F0 / 536870912.0) - o.F);
@@ -1735,9 +1731,7 @@ static double q31_any_step(uint8_t kind, double p0, double p1, int ctl, double k
                 const int32_t raw = (int32_t)lround(us[t] / unit);
                 mdr_step_f64 o;
                 mdr_step_q31 oq;
-                mdr_status sq = ctl == MDR_CONTROL_GRIPS ? mdr_scene_step_d_q31(&q, raw, &oq)
-                                : ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&q, raw, &oq)
-                                                          : mdr_scene_step_z_q31(&q, raw, &oq);
+                mdr_status sq = step_scene_q31(&q, ctl, raw, &oq);
                 assert_int_equal(step_scene64(&s, ctl, raw * unit, &o), MDR_OK);
                 if (sq != MDR_OK) {
                     printf("q31 scene profile %d control %d k_m %g: tick %d to %g of umax from %g refused (%d)\n",
@@ -1820,14 +1814,8 @@ static double force_only(uint8_t kind, double p0, double p1, int ctl, double k_m
         assert_int_equal(step_scene64(&b64, ctl, u, &ob), MDR_OK);
         assert_int_equal(step_scene32(&a32, ctl, (float)u, &pa), MDR_OK);
         assert_int_equal(step_scene32(&b32, ctl, (float)u, &pb), MDR_OK);
-        assert_int_equal(ctl == MDR_CONTROL_GRIPS  ? mdr_scene_step_d_q31(&aq, raw, &qa)
-                         : ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&aq, raw, &qa)
-                                                   : mdr_scene_step_z_q31(&aq, raw, &qa),
-                         MDR_OK);
-        assert_int_equal(ctl == MDR_CONTROL_GRIPS  ? mdr_scene_step_d_q31(&bq, raw, &qb)
-                         : ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&bq, raw, &qb)
-                                                   : mdr_scene_step_z_q31(&bq, raw, &qb),
-                         MDR_OK);
+        assert_int_equal(step_scene_q31(&aq, ctl, raw, &qa), MDR_OK);
+        assert_int_equal(step_scene_q31(&bq, ctl, raw, &qb), MDR_OK);
         if (!(oa.d == ob.d && oa.F == ob.F && pa.d == pb.d && pa.F == pb.F && qa.d == qb.d && qa.F == qb.F)) {
             printf("profile %d control %d k_m %g tick %d: force only d %.17g F %.17g (f32 %.9g %.9g, q31 %ld "
                    "%ld), every output d %.17g F %.17g (f32 %.9g %.9g, q31 %ld %ld)\n",
@@ -2177,9 +2165,7 @@ static void scene_q31_slow_recede(void **state)
                               : mid - (i - 3000);
             assert_true(i < 3000 + 2 * (mid - raw_f) + 100);
             assert_int_equal(step_scene64(&s, ctl, raw * unit, &o), MDR_OK);
-            assert_int_equal(ctl == MDR_CONTROL_LOAD ? mdr_scene_step_F_q31(&q, raw, &oq)
-                                                     : mdr_scene_step_z_q31(&q, raw, &oq),
-                             MDR_OK);
+            assert_int_equal(step_scene_q31(&q, ctl, raw, &oq), MDR_OK);
             assert_int_equal(q.flags, 0);
             po = o.event == MDR_EV_PULL_OFF || oq.event == MDR_EV_PULL_OFF;
             if (i <= 3000 || po) {
