@@ -38,7 +38,7 @@ step-cost: $(B)/tgt-m4/step_cost.elf $(B)/tgt-m3/step_cost.elf
 	  && cp $(B)/bench/performance.md docs/performance.md
 	@echo "step-cost: $(B)/bench/step_cost.csv written; docs/performance.md's step-cost table updated"
 # Where one line's instructions go: make step-trace [TRACE=scene,q31,afm]
-# [CORE=m3|m4] [CLASS=moving|pinned|separated|all|worst] [DEPTH=1] [TOP=25].
+# [CORE=m3|m4] [CLASS=moving|pinned|separated|all|worst] [DEPTH=1] [TOP=25] [TRACE_TIMEOUT=600].
 # step_cost.c runs that line alone (-DSTEP_TRACE), against a copy of the
 # core's library with -g (same code), under QEMU's instruction trace
 # (-singlestep -d exec,nochain); mk/step_trace.py checks the trace's ticks
@@ -52,6 +52,8 @@ CORE ?= m3
 CLASS ?= moving
 DEPTH ?= 1
 TOP ?= 25
+# (QEMU's limit in seconds: a busy machine can pass 600 on a q31 grips line)
+TRACE_TIMEOUT ?= 600
 .PHONY: step-trace
 ifneq ($(filter step-trace,$(MAKECMDGOALS)),)
 override CORE := $(patsubst m4f,m4,$(CORE))
@@ -70,6 +72,9 @@ endif
 ifeq ($(shell echo '$(DEPTH) $(TOP)' | grep -Ex '[1-9][0-9]{0,2} [1-9][0-9]{0,3}'),)
 $(error step-trace: DEPTH=$(DEPTH) and TOP=$(TOP) must be counts from 1)
 endif
+ifeq ($(shell echo '$(TRACE_TIMEOUT)' | grep -Ex '[1-9][0-9]{0,4}'),)
+$(error step-trace: TRACE_TIMEOUT=$(TRACE_TIMEOUT) must be whole seconds from 1)
+endif
 endif
 TRACE_CC_m3 = $(TGT_m3)
 TRACE_CC_m4 = $(TGT_m4) -DMDR_STEP_SECTION='".ramfunc"'
@@ -87,7 +92,7 @@ step-trace: $(B)/trace-$(CORE)/libmdr.a host_tests/target/step_cost.c mk/step_tr
 	  rm -f $$d/qemu.fifo && mkfifo $$d/qemu.fifo && \
 	  { /usr/bin/python3 mk/step_trace.py $$d/step_trace.elf $$d/qemu.fifo $$d/ticks.log --line $(TRACE) \
 	      --class $(CLASS) --depth $(DEPTH) --top $(TOP) --prefix $(MDR_CM_PREFIX) & } && \
-	  timeout 600 qemu-system-arm -M $(QEMU_$(CORE)) -nographic -monitor none -serial none \
+	  timeout $(TRACE_TIMEOUT) qemu-system-arm -M $(QEMU_$(CORE)) -nographic -monitor none -serial none \
 	    -semihosting-config enable=on,target=native -icount shift=7 -singlestep -d exec,nochain \
 	    -dfilter $$f \
 	    -D $$d/qemu.fifo -kernel $$d/step_trace.elf > $$d/ticks.log; q=$$?; wait $$!; p=$$?; \

@@ -223,6 +223,8 @@ def _check_f32(out, z, F, tip, k_machine, **opts):
     e64 = ffi.new("double[3]", [r64.E_err, r64.w_err, r64.w_adv_err or 0.0])
     which, x = ffi.new("int *"), ffi.new("double *")
     k = lib.mdrpy_f32_fit_check(p32, e32, p64, e64, 3 if opts["approach"] else 2, which, x)
+    if k == 0:
+        return
     name = ffi.string(lib.mdrpy_f32_fit_which(which[0])).decode()
     if k == 1:
         raise Error(lib.MDR_E_PARAM, where, hint="f32's %s is %.2g off f64's fit of the same samples (more than %g "
