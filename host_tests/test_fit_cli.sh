@@ -256,7 +256,8 @@ out=$("$MDR" fit --curve "$TMP/short.csv" $TIP --k-machine 0.2 --approach --flat
 # a pinned top: the same cycle with w_adv < w (the retract starts at the
 # approach's largest contact, held until the force meets the receding
 # branch): the fit leaves that part out (n_pinned) and recovers E* and w
-# to 1e-7 (measured E* 1.4e-13, w 3.7e-14 at w_adv = w/2, stop 61; before, E* came out 34 % high)
+# to 1e-7 (measured E* 1.4e-13, w 3.7e-14 at w_adv = w/2, stop 61, and 6.7e-16, 3.6e-16 at stop 75;
+# before stop 61, E* came out 34 % high)
 for wadv in 0.025; do
     "$MDR" cycle $TIP --E 1e9 --w 0.05 --control machine --k-machine 0.2 --path -1e-8,2e-8,-4e-8 \
         --steps-per-segment 1000 --w-adv $wadv --arith f64 --springs 1024 2>/dev/null |
@@ -265,6 +266,12 @@ for wadv in 0.025; do
     near "$(key "$out" E)" 1e9 1e-7 && ok || bad "pinned top (w_adv $wadv): E: $out"
     near "$(key "$out" w)" 0.05 1e-7 && ok || bad "pinned top (w_adv $wadv): w: $out"
     [ "$(key "$out" n_pinned)" -gt 0 ] && ok || bad "pinned top (w_adv $wadv): n_pinned: $out"
+    # the README's test data: the same with --approach, as its fit line (E* 6.7e-16, w_adv
+    # 8.1e-12 at stop 75)
+    out=$("$MDR" fit --curve "$TMP/p.csv" $TIP --k-machine 0.2 --approach) && ok ||
+        bad "pinned top, --approach, exit (w_adv $wadv): $out"
+    near "$(key "$out" E)" 1e9 1e-7 && near "$(key "$out" w_adv)" $wadv 1e-7 && ok ||
+        bad "pinned top, --approach (w_adv $wadv): E, w_adv: $out"
 done
 # pinned to the rupture (w_adv = 0: the contact holds the approach's radius
 # until it lets go): a line and its end do not determine E* and w, so the
