@@ -130,7 +130,8 @@ awk -v a="$(key "$out" w_adv)" -v e="$(key "$out" w_adv_err)" 'BEGIN { exit !((a
 # correlation diluted by E*'s inflated error, 0.85 where 0.93 is measured,
 # w_adv's pulls' rms here was 0.52). With the approach's
 # error alone the rms was 1.36, with drift of 1 % over the cycle (the
-# approach's own baseline line) 2.12, two-point 6.8; now 0.98, 0.94, 0.67
+# approach's own baseline line) 2.12, two-point 6.8; then 0.98, 0.94, 0.67 (stop 51; 0.98,
+# 0.95, 0.63 at stop 75)
 # (120 draws: 1.59, 2.29, 7.00 before, 1.04, 1.01, 0.73 now).
 # The noise: Park-Miller (16807 s mod 2^31 - 1, exact in any awk's
 # doubles) and Box-Muller; noisy()'s LCG is not exact there (its products

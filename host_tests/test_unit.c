@@ -741,7 +741,7 @@ static void stress_cone_next_to_the_edge(void **st)
  * (2 sqrt(a^2 - b^2) - b atan(sqrt(a^2 - b^2)/b))/R, elsewhere by Simpson's
  * rule in long double (4 000 intervals; a substitution the library does not
  * use). 1e-12 (f64) and 2e-6 (f32, at its inputs rounded to float) of the
- * two terms' sizes [measured 2.1e-13, 1.3e-7]. Found by helper-65 (stop 71): one quadrature panel
+ * two terms' sizes [measured 2.1e-13, 1.3e-7; 1.1e-7 at stop 75]. Found by helper-65 (stop 71): one quadrature panel
  * over the flat's substitution was 1.2e-8 off at a = 100 b. */
 static double flattip_flat_sigma(double R, double b, double E, double w, double a, double r, double *scale)
 {
