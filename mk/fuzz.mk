@@ -20,6 +20,12 @@
 FUZZ_TARGETS := init step table
 FUZZ_TIME ?=
 FUZZ_RUNS ?= 3000
+# libFuzzer's limit per input, seconds: a hang's, not a slow input's. The
+# library's longest bounded calls (a wavy critical search at its scan cap,
+# MDR_CRIT_SCAN_MAX cells: MDR_E_NOCONV) take about 2 s each under the
+# sanitizers on an idle host; stop 75's CI met one input (f64 and f32: 4.4 s
+# alone) beyond the 10 s that was the limit, with the host busy
+FUZZ_TIMEOUT ?= 60
 FUZZ_ARGS = $(if $(FUZZ_TIME),-max_total_time=$(FUZZ_TIME) -seed=0,-runs=$(FUZZ_RUNS) -seed=1)
 FUZZ_HDRS := host_tests/fuzz/fuzz.h host_tests/fuzz/fuzz_engine_t.h host_tests/fuzz/fuzz_init_t.h examples/tip_csv.h
 FUZZ_CFLAGS := -std=c99 -fno-math-errno -D_GNU_SOURCE -Wall -Wextra -Werror -Ilib/include -Iport/host -Iexamples
@@ -46,7 +52,7 @@ fuzz-replay: $(addprefix $(B)/san/replay_,$(FUZZ_TARGETS))
 $(B)/fuzz/%.run: $(B)/fuzz/fuzz_%
 	@rm -f $@; t=$*; w=$(B)/fuzz/work_$$t; rm -rf $(B)/fuzz/art_$$t; $(if $(FUZZ_TIME),,rm -rf $$w;) \
 	  mkdir -p $$w $(B)/fuzz/art_$$t; \
-	  if ./$< $(FUZZ_ARGS) -timeout=10 -rss_limit_mb=2048 \
+	  if ./$< $(FUZZ_ARGS) -timeout=$(FUZZ_TIMEOUT) -rss_limit_mb=2048 \
 	       -artifact_prefix=$(B)/fuzz/art_$$t/ $$w host_tests/fuzz/corpus/$$t > $(B)/fuzz/$$t.log 2>&1; then \
 	    echo "== fuzz $$t: $$(grep -o 'Done [0-9]* runs in [0-9]* second' $(B)/fuzz/$$t.log | tail -1)s, \
 	      coverage $$(grep -o 'cov: [0-9]*' $(B)/fuzz/$$t.log | tail -1 | cut -d' ' -f2), no failure" > $(B)/fuzz/$$t.sum; \
