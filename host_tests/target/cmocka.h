@@ -25,13 +25,16 @@
 #include <string.h>
 
 typedef void (*CMUnitTestFunction)(void **state);
+typedef int (*CMFixtureFunction)(void **state);
 
 struct CMUnitTest {
     const char *name;
     CMUnitTestFunction test_func;
+    CMFixtureFunction setup_func; /* run before the test (NULL: none), as cmocka's */
 };
 
-#define cmocka_unit_test(f) {#f, f}
+#define cmocka_unit_test(f) {#f, f, NULL}
+#define cmocka_unit_test_setup(f, setup) {#f, f, setup}
 
 static jmp_buf mdr_cm_jmp;
 
@@ -89,6 +92,9 @@ static inline int mdr_cm_run(const struct CMUnitTest *t, size_t n)
     for (i = 0; i < n; i++) {
         printf("[ RUN      ] %s\n", t[i].name);
         if (setjmp(mdr_cm_jmp) == 0) {
+            if (t[i].setup_func != NULL && t[i].setup_func(NULL) != 0) {
+                mdr_cm_fail(__FILE__, __LINE__, "setup failed");
+            }
             t[i].test_func(NULL);
             printf("[       OK ] %s\n", t[i].name);
         } else {
