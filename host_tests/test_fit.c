@@ -4057,7 +4057,7 @@ static void test_refuse_valley(void **state)
     int j, i, ok = 0, okprof = 0, out3 = 0, refused = 0;
     double worst_dev = 0;
     (void)state;
-    noise_state = 88172645463325252ull;
+    noise_state = NOISE_SEED0;
     for (j = 0; j < NVALLEY; j++) {
         jkr_par p;
         mdr_contact_f64 c;
@@ -4114,82 +4114,84 @@ static void test_refuse_valley(void **state)
 }
 #endif /* !MDR_TARGET_TEST */
 
+/* every test from the noise's start (noise_reseed): its draws, and the
+ * figures it prints, are those of the test run alone (MDR_FIT_TESTS),
+ * whichever tests ran before it (until stop 75 a test that did not seed
+ * itself took the state the tests before it left: helper-78) */
+#define FIT_TEST(f) cmocka_unit_test_setup(f, noise_reseed)
+
 int main(void)
 {
-    /* every test from the noise's start (noise_reseed): its draws, and the
-     * figures it prints, are those of the test run alone (MDR_FIT_TESTS),
-     * whichever tests ran before it (until stop 75 a test that did not seed
-     * itself took the state the tests before it left: helper-78) */
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup(test_model_vs_closed_form, noise_reseed),
-        cmocka_unit_test_setup(test_roundtrip_closed_form, noise_reseed),
-        cmocka_unit_test_setup(test_roundtrip_profiles, noise_reseed),
-        cmocka_unit_test_setup(test_roundtrip_f32, noise_reseed),
+        FIT_TEST(test_model_vs_closed_form),
+        FIT_TEST(test_roundtrip_closed_form),
+        FIT_TEST(test_roundtrip_profiles),
+        FIT_TEST(test_roundtrip_f32),
 #ifndef MDR_TARGET_TEST
-        cmocka_unit_test_setup(test_table_last_radius, noise_reseed),
+        FIT_TEST(test_table_last_radius),
 #endif
-        cmocka_unit_test_setup(test_f32_soft_lever, noise_reseed),
-        cmocka_unit_test_setup(test_noise, noise_reseed),
-        cmocka_unit_test_setup(test_pinned_top, noise_reseed),
-        cmocka_unit_test_setup(test_pinned_rupture, noise_reseed),
-        cmocka_unit_test_setup(test_pinned_noise, noise_reseed),
-        cmocka_unit_test_setup(test_two_point, noise_reseed),
-        cmocka_unit_test_setup(test_two_point_errors, noise_reseed),
-        cmocka_unit_test_setup(test_two_point_tilt, noise_reseed),
+        FIT_TEST(test_f32_soft_lever),
+        FIT_TEST(test_noise),
+        FIT_TEST(test_pinned_top),
+        FIT_TEST(test_pinned_rupture),
+        FIT_TEST(test_pinned_noise),
+        FIT_TEST(test_two_point),
+        FIT_TEST(test_two_point_errors),
+        FIT_TEST(test_two_point_tilt),
 #ifndef MDR_TARGET_TEST
-        cmocka_unit_test_setup(test_two_point_mc, noise_reseed),
+        FIT_TEST(test_two_point_mc),
 #endif
-        cmocka_unit_test_setup(test_approach, noise_reseed),
-        cmocka_unit_test_setup(test_approach_misfit, noise_reseed),
+        FIT_TEST(test_approach),
+        FIT_TEST(test_approach_misfit),
 #ifndef MDR_TARGET_TEST
-        cmocka_unit_test_setup(test_dwell, noise_reseed),
-        cmocka_unit_test_setup(test_wadv_bound, noise_reseed),
-        cmocka_unit_test_setup(test_few_receding, noise_reseed),
+        FIT_TEST(test_dwell),
+        FIT_TEST(test_wadv_bound),
+        FIT_TEST(test_few_receding),
 #endif
-        cmocka_unit_test_setup(test_tabor, noise_reseed),
-        cmocka_unit_test_setup(test_bad_input, noise_reseed),
-        cmocka_unit_test_setup(test_jumps, noise_reseed),
+        FIT_TEST(test_tabor),
+        FIT_TEST(test_bad_input),
+        FIT_TEST(test_jumps),
 #ifndef MDR_TARGET_TEST
-        cmocka_unit_test_setup(test_refuse_bad_start, noise_reseed),
+        FIT_TEST(test_refuse_bad_start),
 #endif
-        cmocka_unit_test_setup(test_refuse_units, noise_reseed),
-        cmocka_unit_test_setup(test_refuse_distorted, noise_reseed),
-        cmocka_unit_test_setup(test_refuse_runaway, noise_reseed),
-        cmocka_unit_test_setup(test_unpinned, noise_reseed),
-        cmocka_unit_test_setup(test_reversed, noise_reseed),
-        cmocka_unit_test_setup(test_order_baseline_step, noise_reseed),
-        cmocka_unit_test_setup(test_order_glitch, noise_reseed),
-        cmocka_unit_test_setup(test_order_correlated_noise, noise_reseed),
-        cmocka_unit_test_setup(test_order_short_tail, noise_reseed),
-        cmocka_unit_test_setup(test_order_coarse, noise_reseed),
-        cmocka_unit_test_setup(test_reversed_baseline_step, noise_reseed),
-        cmocka_unit_test_setup(test_f32_pinned_offset, noise_reseed),
+        FIT_TEST(test_refuse_units),
+        FIT_TEST(test_refuse_distorted),
+        FIT_TEST(test_refuse_runaway),
+        FIT_TEST(test_unpinned),
+        FIT_TEST(test_reversed),
+        FIT_TEST(test_order_baseline_step),
+        FIT_TEST(test_order_glitch),
+        FIT_TEST(test_order_correlated_noise),
+        FIT_TEST(test_order_short_tail),
+        FIT_TEST(test_order_coarse),
+        FIT_TEST(test_reversed_baseline_step),
+        FIT_TEST(test_f32_pinned_offset),
 #ifndef MDR_TARGET_TEST
-        cmocka_unit_test_setup(test_tail_step, noise_reseed),
-        cmocka_unit_test_setup(test_tail_glitch_clean, noise_reseed),
-        cmocka_unit_test_setup(test_vdw_tail, noise_reseed),
-        cmocka_unit_test_setup(test_f32_offset, noise_reseed),
-        cmocka_unit_test_setup(test_f32_z0_rounding, noise_reseed),
-        cmocka_unit_test_setup(test_tilt, noise_reseed),
-        cmocka_unit_test_setup(test_tilt_approach, noise_reseed),
-        cmocka_unit_test_setup(test_misfit_not_pinned, noise_reseed),
-        cmocka_unit_test_setup(test_coarse_top, noise_reseed),
-        cmocka_unit_test_setup(test_coarse_pinned, noise_reseed),
-        cmocka_unit_test_setup(test_coarse_approach, noise_reseed),
+        FIT_TEST(test_tail_step),
+        FIT_TEST(test_tail_glitch_clean),
+        FIT_TEST(test_vdw_tail),
+        FIT_TEST(test_f32_offset),
+        FIT_TEST(test_f32_z0_rounding),
+        FIT_TEST(test_tilt),
+        FIT_TEST(test_tilt_approach),
+        FIT_TEST(test_misfit_not_pinned),
+        FIT_TEST(test_coarse_top),
+        FIT_TEST(test_coarse_pinned),
+        FIT_TEST(test_coarse_approach),
 #endif
         /* the fit's known, open defects (make test-fit-known, built with
          * -DMDR_FIT_KNOWN_DEFECTS; docs/fitting.md) */
 #ifdef MDR_FIT_KNOWN_DEFECTS
-        cmocka_unit_test_setup(test_known_coarse_approach, noise_reseed),
-        cmocka_unit_test_setup(test_known_curved, noise_reseed),
+        FIT_TEST(test_known_coarse_approach),
+        FIT_TEST(test_known_curved),
 #endif
-        cmocka_unit_test_setup(test_fit_sweep, noise_reseed),
+        FIT_TEST(test_fit_sweep),
 #ifndef MDR_TARGET_TEST
-        cmocka_unit_test_setup(test_cover_fold, noise_reseed),
-        cmocka_unit_test_setup(test_fold_saddle, noise_reseed),
-        cmocka_unit_test_setup(test_fold_saddle_noise_free, noise_reseed),
-        cmocka_unit_test_setup(test_coarse_fold_errors, noise_reseed),
-        cmocka_unit_test_setup(test_refuse_valley, noise_reseed),
+        FIT_TEST(test_cover_fold),
+        FIT_TEST(test_fold_saddle),
+        FIT_TEST(test_fold_saddle_noise_free),
+        FIT_TEST(test_coarse_fold_errors),
+        FIT_TEST(test_refuse_valley),
 #endif
     };
 #ifndef MDR_TARGET_TEST
