@@ -985,7 +985,6 @@ static void test_two_point_errors(void **state)
 {
     static const int sizes[4] = {16, 40, 300, 1000};
     static const double noises[3] = {0.0, 1e-3, 1e-2};
-    const uint64_t saved = noise_state; /* the later tests' curves as they were */
     int s, ni, f32, j, k;
     (void)state;
     noise_state = 0x9E3779B97F4A7C15ull;
@@ -1116,7 +1115,6 @@ static void test_two_point_errors(void **state)
             print_message("two-point case %u: %s\n", (unsigned)c, mdr_status_str(st));
         }
     }
-    noise_state = saved;
 }
 
 /* The two-point method's standard errors against the spread they
@@ -1139,7 +1137,6 @@ static void test_two_point_mc(void **state)
 {
     static const double noises[2] = {0.0, 1e-3};
     static const int sizes[3] = {40, 300, 1000};
-    const uint64_t saved = noise_state;
     int k, ni, s, j;
     (void)state;
     noise_state = 0x2545F4914F6CDD1Dull;
@@ -1175,7 +1172,6 @@ static void test_two_point_mc(void **state)
             }
         }
     }
-    noise_state = saved;
 }
 #endif /* !MDR_TARGET_TEST */
 
@@ -1231,7 +1227,6 @@ static void test_two_point_tilt(void **state)
 {
     static const int sizes[3] = {40, 100, 300};
     static const double noises[4] = {0.0, 1e-4, 1e-3, 3e-3}, tilts[4] = {-0.05, -0.02, 0.02, 0.05};
-    const uint64_t saved = noise_state;
     int j, ok = 0, refused = 0;
     double worst_dev = 0, d;
     (void)state;
@@ -1291,7 +1286,6 @@ static void test_two_point_tilt(void **state)
         assert_true(d <= TP_COVER);
         assert_true(r.F_slope * tl < 0.0 && r.F_slope_err > 0.0 && r.F_slope_err < 1e-2 * fabs(r.F_slope));
     }
-    noise_state = saved;
 }
 
 /* ---- the approach: w_adv ------------------------------------------------------ */
@@ -1952,7 +1946,6 @@ static void test_approach_misfit(void **state)
     static const double moves[3] = {0.0, 3.0, 1e5};
     const jkr_par *p = &regimes[1];
     const mdr_contact_f64 c = paraboloid64(p->R);
-    const uint64_t saved = noise_state;
     int k;
     (void)state;
     for (k = 0; k < 3; k++) {
@@ -1980,7 +1973,6 @@ static void test_approach_misfit(void **state)
             assert_int_equal(st, MDR_E_MISFIT);
         }
     }
-    noise_state = saved;
 }
 
 /* status of the f64 and the f32 fit of zs, Fs (n samples) */
@@ -2036,7 +2028,6 @@ static void test_reversed(void **state)
     static const double Ef[3] = {0.3, 1.0, 3.0}, wa[3] = {1.0, 0.5, 0.25}, sigs[3] = {0.0, 1e-3, 1e-2};
     static const int sizes[2] = {300, 1000};
     int k, ie, ia, is, s, n_app = 0, n_app_misfit = 0, n_full = 0, n_full_order = 0, n_full_misfit = 0;
-    const uint64_t seed = noise_state; /* restored: the later tests' noise as before */
     (void)state;
     for (k = 0; k < 3; k++) {
         for (ie = 0; ie < 3; ie++) {
@@ -2124,7 +2115,6 @@ static void test_reversed(void **state)
         fail_msg("reversed whole curves: %d of %d fits MDR_E_MISFIT, not MDR_E_ORDER (at most %.0f %%)", n_full_misfit,
                  n_full, 100.0 * REV_MISFIT_FRAC);
     }
-    noise_state = seed;
 }
 
 /* ---- time order: what the order checks see in genuine curves ------------- */
@@ -2169,7 +2159,6 @@ static void test_order_baseline_step(void **state)
 {
     static const double steps[2] = {ORDER_STEP, ORDER_STEP_BIG};
     const jkr_par *p = &regimes[1];
-    const uint64_t saved = noise_state;
     mdr_contact_f64 c = paraboloid64(p->R);
     int s, l;
     (void)state;
@@ -2198,13 +2187,11 @@ static void test_order_baseline_step(void **state)
                       "(f64), within %.2f errors; their retracts alone %d answered\n",
                       steps[l], n_order, NORDER, n_ok, worst_err, n_ret);
         if (n_order) {
-            noise_state = saved;
             fail_msg("%d of %d genuine curves (in time order, approach baseline %.0f noise widths above the "
                      "retract's) refused with MDR_E_ORDER",
                      n_order, NORDER, steps[l]);
         }
     }
-    noise_state = saved;
 }
 
 /* A glitch recorded over two samples (a spike through the deflection
@@ -2216,7 +2203,6 @@ static void test_order_baseline_step(void **state)
  * retract is the glitch-free curve's, which the fit answers). */
 static void test_order_glitch(void **state)
 {
-    const uint64_t saved = noise_state; /* the curves are noise-free; restored: the later tests' noise as before */
     mdr_status st[3][2];
     int k, bad = 0;
     (void)state;
@@ -2227,7 +2213,6 @@ static void test_order_glitch(void **state)
         fit_both(&regimes[k], 600u, 0, &st[k][0], &st[k][1]);
         bad += st[k][0] == MDR_E_ORDER || st[k][1] == MDR_E_ORDER;
     }
-    noise_state = saved;
     print_message("two-sample glitch on the approach: status (f64, f32) %d, %d; %d, %d; %d, %d\n", st[0][0], st[0][1],
                   st[1][0], st[1][1], st[2][0], st[2][1]);
     if (bad) {
@@ -2250,7 +2235,6 @@ static void test_order_glitch(void **state)
 static void test_order_correlated_noise(void **state)
 {
     const jkr_par *p = &regimes[0];
-    const uint64_t saved = noise_state;
     mdr_contact_f64 c = paraboloid64(p->R);
     mdr_fit_opts_f64 o;
     mdr_fit_result_f64 r;
@@ -2273,7 +2257,6 @@ static void test_order_correlated_noise(void **state)
         n_misfit += mdr_fit_curve_f64(&c, &o, zs + NORDER_PTS, Fs + NORDER_PTS, NORDER_PTS, work64, 2 * NMAX, &r) ==
                     MDR_E_MISFIT;
     }
-    noise_state = saved;
     print_message("correlated noise: %d of %d curves in time order MDR_E_ORDER, %d answered (f64; within %.2f "
                   "errors); their retracts alone %d MDR_E_MISFIT\n",
                   n_order, NORDER, n_ok, worst, n_misfit);
@@ -2304,7 +2287,6 @@ static void test_order_coarse(void **state)
 {
     static const int sizes[5] = {8, 12, 16, 24, 40}, tails[3] = {3, 4, 6};
     static const double Es[3] = {0.3, 1.0, 3.0}, ratios[3] = {1.0, 0.5, 0.25};
-    const uint64_t saved = noise_state;
     int r, e, k, s, t, i, n_order = 0, n_all = 0, n_ok = 0;
     (void)state;
     noise_state = 0xbb67ae8584caa73bull;
@@ -2366,7 +2348,6 @@ static void test_order_coarse(void **state)
         n_ok += (a == MDR_OK) + (b == MDR_OK);
         n_order += (a == MDR_E_ORDER) + (b == MDR_E_ORDER);
     }
-    noise_state = saved;
     print_message("coarse sampling (8 to 40 samples a branch): %d of %d fits of curves in time order MDR_E_ORDER, "
                   "%d ok\n", n_order, n_all, n_ok);
     assert_int_equal(n_order, 0);
@@ -2385,7 +2366,6 @@ static void test_order_coarse(void **state)
 static void test_order_short_tail(void **state)
 {
     const jkr_par *p = &regimes[1];
-    const uint64_t saved = noise_state;
     int s, t, i, last, n_order = 0, n_all = 0, n_ok = 0;
     (void)state;
     noise_state = 0x3c6ef372fe94f82bull;
@@ -2411,7 +2391,6 @@ static void test_order_short_tail(void **state)
             }
         }
     }
-    noise_state = saved;
     print_message("short retract tail (3 to %d free samples): %d of %d curves in time order MDR_E_ORDER, %d ok (f64)\n",
                   ORDER_TAIL_MAX, n_order, n_all, n_ok);
     if (n_order) {
@@ -2436,7 +2415,6 @@ static void test_order_short_tail(void **state)
 static void test_reversed_baseline_step(void **state)
 {
     const jkr_par *p = &regimes[1];
-    const uint64_t saved = noise_state;
     mdr_contact_f64 c = paraboloid64(p->R);
     int s, ap, n_ok = 0, n = 300;
     double w_lo = 1.0, w_hi = 0.0, e_lo = 1e300, e_hi = 0.0;
@@ -2463,7 +2441,6 @@ static void test_reversed_baseline_step(void **state)
             }
         }
     }
-    noise_state = saved;
     if (w_hi > 0.0) {
         print_message("reversed, the approach's baseline %.2g of the pull-off force off: %d of %d fits ok "
                       "(f64: w %.3g to %.3g x the truth, %.1f to %.1f of its errors)\n",
@@ -2499,7 +2476,6 @@ static void test_reversed_baseline_step(void **state)
 static void test_f32_pinned_offset(void **state)
 {
     static const double z0s[5] = {0.0, 0.5e-6, 1e-6, 2e-6, 5e-6};
-    const uint64_t saved = noise_state;
     double worst64 = 0.0, worst32 = 0.0;
     int g, k, s, i, n = 100, npin, n32 = 0, nall = 0;
     (void)state;
@@ -2553,7 +2529,6 @@ static void test_f32_pinned_offset(void **state)
             }
         }
     }
-    noise_state = saved;
     print_message("f32 pinned top at offsets 0 to 5 um: %d of %d answered, worst %.1f errors (f64: %.1f)\n", n32, nall,
                   worst32, worst64);
 }
@@ -2907,7 +2882,6 @@ static void test_coarse_top(void **state)
         double sig;
     } rows[3] = {{51, 3e-3}, {26, 3e-3}, {51, 1e-2}};
     jkr_par p = regimes[1];
-    const uint64_t saved = noise_state;
     mdr_contact_f64 c = paraboloid64(p.R);
     int k;
     (void)state;
@@ -2960,7 +2934,6 @@ static void test_coarse_top(void **state)
         assert_int_equal(t[1].n_ok, 30);
         assert_true(t[2].n_ok >= 27);
     }
-    noise_state = saved;
 }
 
 /* test_known_coarse_approach's curves as a guard of what is fixed: the
@@ -2997,7 +2970,6 @@ static void test_coarse_pinned(void **state)
 {
     static const double ratios[4] = {0.0, 0.3, 0.6, 0.9};
     static const int ns[4] = {40, 60, 100, 200};
-    const uint64_t saved = noise_state;
     coarse_sweep_t o;
     int i;
     (void)state;
@@ -3015,7 +2987,6 @@ static void test_coarse_pinned(void **state)
     assert_true(o.n_ok - o.n_nf >= 250);
     /* (a pinned top the fit from the top misses: MDR_E_FEW, not a misfit) */
     assert_true(o.n_st[-MDR_E_FEW] >= 40 && o.n_st[-MDR_E_MISFIT] <= 30);
-    noise_state = saved;
 }
 
 /* A dwell at the top: DWELL_N rows at the largest z between the approach's
@@ -3038,7 +3009,6 @@ static void test_coarse_pinned(void **state)
 #define DWELL_SEEDS 10
 static void test_dwell(void **state)
 {
-    const uint64_t saved = noise_state;
     int k;
     (void)state;
     noise_state = 0x13198a2e03707344ull;
@@ -3092,7 +3062,6 @@ static void test_dwell(void **state)
         assert_true(n_ok >= 8);
         assert_true(worst <= 3.2);
     }
-    noise_state = saved;
 }
 
 /* w_adv at its bound: a helper's curves without hysteresis (w_adv = w)
@@ -3108,7 +3077,6 @@ static void test_dwell(void **state)
 #define WADV_SEEDS 40
 static void test_wadv_bound(void **state)
 {
-    const uint64_t saved = noise_state;
     const jkr_par p = {1.1724835271931731e-06, 258141221.2102252, 0.13875230321587065, 2.5733658037794167};
     const int n = 1999;
     const double z0 = 2e-6, zlo = -3.898124767575308e-06, zhi = 4.317381497895708e-06;
@@ -3160,7 +3128,6 @@ static void test_wadv_bound(void **state)
     assert_true(n_ok >= WADV_SEEDS / 2);
     assert_true(worst <= 5.0);
     assert_true(at_bound >= 1);
-    noise_state = saved;
 }
 
 /* Few receding samples after a pinned top: a helper's retracts (w_adv = 0,
@@ -3173,7 +3140,6 @@ static void test_wadv_bound(void **state)
 static void test_few_receding(void **state)
 {
     static const double tops[6] = {0.55, 0.63, 0.8, 1.0, 1.5, 2.5};
-    const uint64_t saved = noise_state;
     const jkr_par p = {8e-9, 5.57e6, 0.19, 2.44};
     const int n = 185;
     mdr_contact_f64 c = paraboloid64(p.R);
@@ -3215,7 +3181,6 @@ static void test_few_receding(void **state)
                   n_ok, 6 * RECEDE_SEEDS, n_few, n_long, 2 * RECEDE_SEEDS, worst);
     assert_true(worst <= 5.0);
     assert_true(n_long >= RECEDE_SEEDS);
-    noise_state = saved;
 }
 #endif
 
@@ -3231,7 +3196,6 @@ static void test_tilt_approach(void **state)
 {
     static const double tilt[4] = {-0.05, -0.02, 0.02, 0.05};
     const jkr_par *p = &regimes[1];
-    const uint64_t saved = noise_state;
     mdr_contact_f64 c = paraboloid64(p->R);
     int k, s, i, n_ok = 0, n_all = 0, n_less = 0, n_both = 0;
     double worst = 0.0;
@@ -3282,7 +3246,6 @@ static void test_tilt_approach(void **state)
             }
         }
     }
-    noise_state = saved;
     print_message("tilted whole curves (approach's free part counted): %d of %d answered, worst %.1f errors; F_slope's "
                   "error below the retract's alone in %d of %d\n", n_ok, n_all, worst, n_less, n_both);
     assert_true(2 * n_ok >= n_all);
@@ -3357,7 +3320,6 @@ static void test_tail_glitch_clean(void **state)
     const int n = 400;
     mdr_contact_f64 c = paraboloid64(p.R);
     static double z0[NMAX], F0[NMAX];
-    const uint64_t saved = noise_state;
     int s, g, q, nok = 0, nref = 0, bad = 0;
     double worst = 0.0;
     (void)state;
@@ -3402,7 +3364,6 @@ static void test_tail_glitch_clean(void **state)
             }
         }
     }
-    noise_state = saved;
     print_message("one glitch of 0.2 .. 0.5 of the pull-off force late in the free tail: %d refused, %d answered, the "
                   "worst %.1f of the clean curve's errors off, %d beyond %g\n", nref, nok, worst, bad,
                   GLITCH_CLEAN_MAX);
@@ -3479,7 +3440,6 @@ static void test_f32_z0_rounding(void **state)
     static const double off[3] = {1e-3, 3e-3, 1e-2};
     const jkr_par p = regimes[1];
     const float pp[3] = {(float)p.R, 0, 0};
-    const uint64_t saved = noise_state;
     mdr_contact_f32 c32;
     double worst = 0;
     int k, s, i;
@@ -3504,7 +3464,6 @@ static void test_f32_z0_rounding(void **state)
             worst = fmax(worst, fabs((double)r32.z0 - z0) / (double)r32.z0_err);
         }
     }
-    noise_state = saved;
     print_message("f32 z0 at 1 to 10 mm offsets: the worst %.2f errors off\n", worst);
     assert_true(worst <= 3.0);
 }
@@ -3986,7 +3945,6 @@ static void test_coarse_fold_errors(void **state)
     static const int COARSE_N[3] = {25, 40, 60};
     const jkr_par *p = &regimes[1];
     const mdr_contact_f64 c = paraboloid64(p->R);
-    const uint64_t saved = noise_state; /* the later tests' curves as they were */
     int k;
     (void)state;
     noise_state = 0x9E3779B97F4A7C15ull;
@@ -4030,7 +3988,6 @@ static void test_coarse_fold_errors(void **state)
         assert_true(worst <= COARSE_MAX);
         assert_true(sqrt(v) / ew[ok / 2] < COARSE_RATIO && ew[ok / 2] / sqrt(v) < COARSE_RATIO);
     }
-    noise_state = saved;
 }
 #endif /* !MDR_TARGET_TEST */
 
