@@ -7,8 +7,9 @@ cycle`, paraboloid R 20 nm, E* 1 GPa, w 0.05, machine control, path -10 ->
 0, 0.1 %, 1 % and 3 % of the pull-off force on F (8 copies, seed 1), each
 fitted with `mdr fit` (the retract alone, and with --approach: rows
 "+approach"); per row the status or E*/E and, in parentheses, its distance
-from the truth in reported standard errors (noise-free rows: the relative
-errors of E* and w).
+from the truth in reported standard errors, with --approach also the
+fitted w_adv and its error (noise-free rows: the relative errors of E* and
+w).
 Usage: python3 host_tests/fit_pinned_matrix.py [build/host/mdr]  (~3 s)"""
 import json
 import os
@@ -40,6 +41,9 @@ def fit(path, z, F, km, exact=False, extra=()):
         return r["status"].replace("MDR_E_", "")
     if exact:  # noise-free: the relative errors of E* and w
         return "E*/E-1 %.1e w/w-1 %.1e" % (r["E"] / 1e9 - 1, r["w"] / 0.05 - 1)
+    if "--approach" in extra:  # and the approach's w_adv with its error
+        return "%.2f(%.1f;w_adv %.4f+-%.4f)" % (r["E"] / 1e9, (r["E"] - 1e9) / r["E_err"], r["w_adv"],
+                                               r["w_adv_err"])
     return "%.2f(%.1f)" % (r["E"] / 1e9, (r["E"] - 1e9) / r["E_err"])
 
 
