@@ -167,7 +167,12 @@
  *     forces, 185 samples, noise 0.35 %, RECEDE_SEEDS seeds each: every
  *     answer within 5 reported errors (E*, w), MDR_E_FEW where fewer than
  *     MDR_FIT_MIN_RECEDE receding samples remain, and at least half of the
- *     two highest tops' curves answered.
+ *     two highest tops' curves answered; the same without noise
+ *     (test_few_receding_clean, host only: that retract and helper-80's, E*
+ *     10.4 GPa through 0.115 N/m, tops of 0.55 to 8, 100 to 912
+ *     samples, f64 and f32): every curve with fewer than
+ *     MDR_FIT_MIN_RECEDE receding samples refused, f64's answers of the
+ *     others within TOL_RT_CF (E*, w; measured worst: printed).
  *   coarse curves without hysteresis (test_coarse_top, host only): 26 and
  *     51 samples a branch through a 2 N/m lever, noise 0.3 % and 1 %, 30
  *     seeds each: the default fit answers within 5 reported errors or
@@ -3182,6 +3187,90 @@ static void test_few_receding(void **state)
     assert_true(worst <= 5.0);
     assert_true(n_long >= RECEDE_SEEDS);
 }
+
+/* Few receding samples after a pinned top, noise-free: the straight start
+ * (mdr_f_line) leaves fewer than MDR_FIT_MIN_RECEDE samples below it, a
+ * pinned top, refused (MDR_E_FEW where the line sees it; MDR_E_PINNED or
+ * MDR_E_MISFIT where the pinned part reaches the pull-off's samples); until
+ * stop 76 the fit then started from the top, took the pinned samples in
+ * and saw no pinned top: helper-80's curve, 39 pinned and 15 receding
+ * samples, E* 1.22 x at 13 errors, n_pinned 0, status ok, f64 and f32.
+ * With more, f64 answers exactly (TOL_RT_CF); the library's own f32 fit
+ * still misses some such pinned tops (a known defect, docs/fitting.md: the
+ * CLI and the Python package refuse those answers against f64's), so f32
+ * is held to the refusal alone. */
+static void test_few_receding_clean(void **state)
+{
+    static const double tops[2][4] = {{0.55, 0.8, 1.5, 2.5}, {2.0, 4.0, 5.63, 8.0}};
+    static const int ns[4] = {40, 70, 100, 185};
+    const jkr_par ps[2] = {{8e-9, 5.57e6, 0.19, 2.44}, {1.8e-8, 1.04e10, 0.00373, 0.115}};
+    int m, t, k, f, i, a, n_short = 0, n_refused = 0, n_few = 0, n_ok = 0;
+    double worst = 0.0;
+    (void)state;
+    for (m = 0; m < 2; m++) {
+        const jkr_par *p = &ps[m];
+        mdr_contact_f64 c = paraboloid64(p->R);
+        mdr_contact_f32 c32;
+        const float pp[3] = {(float)p->R, 0, 0};
+        double Ff;
+        assert_int_equal(mdr_contact_init_f32(&c32, MDR_PROFILE_PARABOLOID, pp, 1.0f, 0.0f), MDR_OK);
+        (void)jkr_z(p, jkr_fold(p), &Ff, NULL);
+        for (t = 0; t < 4; t++) {
+            const double at = cbrt(3 * p->R * tops[m][t] * fabs(Ff) / (4 * p->E));
+            for (k = 0; k < 8; k++) {
+                /* pinned_curve's free tail (0.4 of the contact part's z
+                 * span), or 16 spans (helper-80's: few samples in contact) */
+                double Fpo;
+                int npin, last = pinned_curve(p, 0.0, at, 2e-6, 0.0, ns[k % 4], zs, Fs, &npin, &Fpo), n = ns[k % 4];
+                const int rec = last + 1 - npin;
+                for (f = k < 4 ? 0 : (int)(15.6 * (n - 1) / 1.4), i = n; i < n + f; i++) {
+                    zs[i] = zs[i - 1] - (zs[0] - zs[1]);
+                    Fs[i] = 0.0;
+                }
+                n += f;
+                curve32(n);
+                for (a = 0; a < 2; a++) {
+                    mdr_status st;
+                    double E, w;
+                    if (a == 0) {
+                        mdr_fit_opts_f64 o;
+                        mdr_fit_result_f64 r;
+                        mdr_fit_defaults_f64(&o, p->km);
+                        st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &r);
+                        E = r.E, w = r.w;
+                    } else {
+                        mdr_fit_opts_f32 o;
+                        mdr_fit_result_f32 r;
+                        mdr_fit_defaults_f32(&o, (float)p->km);
+                        st = mdr_fit_curve_f32(&c32, &o, zs32, Fs32, (uint32_t)n, work32, 2 * NMAX, &r);
+                        E = r.E, w = r.w;
+                    }
+                    if (rec < MDR_FIT_MIN_RECEDE) {
+                        n_short++;
+                        n_refused += st != MDR_OK;
+                        if (st == MDR_OK) {
+                            print_message("  few receding, noise-free, E* %.3g, top %.2f, %d samples (%s): %d of %d "
+                                          "pinned, %d receding, answered: E* %.4g x, w %.4g x\n", p->E, tops[m][t], n,
+                                          a ? "f32" : "f64", npin, last + 1, rec, E / p->E, w / p->w);
+                        } else if (a == 0) {
+                            n_few += st == MDR_E_FEW;
+                        }
+                    } else if (a == 0 && st == MDR_OK) {
+                        n_ok++;
+                        worst = fmax(worst, fmax(fabs(E / p->E - 1), fabs(w / p->w - 1)));
+                    }
+                }
+            }
+        }
+    }
+    print_message("few receding samples, noise-free: %d of %d fits with fewer than %d receding refused (f64: %d "
+                  "MDR_E_FEW); f64 answers %d of the others, worst %.2g\n", n_refused, n_short, MDR_FIT_MIN_RECEDE,
+                  n_few, n_ok, worst);
+    assert_int_equal(n_refused, n_short);
+    assert_true(n_short >= 8);
+    assert_true(n_ok >= 8);
+    assert_true(worst <= TOL_RT_CF);
+}
 #endif
 
 /* The same tilts on whole curves in time order (order_curve: regimes[1],
@@ -4104,6 +4193,7 @@ int main(void)
         FIT_TEST(test_dwell),
         FIT_TEST(test_wadv_bound),
         FIT_TEST(test_few_receding),
+        FIT_TEST(test_few_receding_clean),
 #endif
         FIT_TEST(test_tabor),
         FIT_TEST(test_bad_input),
