@@ -166,8 +166,8 @@
  *     only): w_adv = 0 through 2.44 N/m, tops of 0.55 to 2.5 pull-off
  *     forces, 185 samples, noise 0.35 %, RECEDE_SEEDS seeds each: every
  *     answer within 5 reported errors (E*, w), MDR_E_FEW where fewer than
- *     MDR_FIT_MIN_RECEDE receding samples remain, and at least half of the
- *     two highest tops' curves answered; the same without noise
+ *     MDR_FIT_MIN_RECEDE receding samples remain (every refusal), and at
+ *     least half of the two highest tops' curves answered; the same without noise
  *     (test_few_receding_clean, host only: that retract and helper-80's, E*
  *     10.4 GPa through 0.115 N/m, tops of 0.55 to 8, 100 to 912
  *     samples, f64 and f32): every curve with fewer than
@@ -3186,6 +3186,10 @@ static void test_few_receding(void **state)
                   n_ok, 6 * RECEDE_SEEDS, n_few, n_long, 2 * RECEDE_SEEDS, worst);
     assert_true(worst <= 5.0);
     assert_true(n_long >= RECEDE_SEEDS);
+    /* every refusal names the cause: the short receding branch (noisy: the
+     * fit from the top misses the samples, MDR_E_FEW, not MDR_E_MISFIT;
+     * mutation fit-top-misfit) */
+    assert_int_equal(n_few + n_ok, 6 * RECEDE_SEEDS);
 }
 
 /* Few receding samples after a pinned top, noise-free: the straight start
