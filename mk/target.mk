@@ -71,9 +71,9 @@ endif
 # of a program's QEMU time in soft double and run whole on the host, under
 # the sanitizers and in the mutation gate; every function they call runs on
 # the core in the program's other tests (test_unit's: on the M7, below).
-# TARGET_TEST=full runs them (stop
-# 76: 216 s of the M4F's QEMU time with test_fit's, mk/fit.mk, which with
-# the phase's other runs kept CI above its 15 minutes). The M4F's
+# TARGET_TEST=full runs them (stop 76: 216 s of the M4F's QEMU time with
+# test_fit's, mk/fit.mk, which with the phase's other runs kept CI above its
+# 15 minutes). The M4F's
 # test_engine: the sampled-profile rim sweep, the seed's wavy cycle of Fig.
 # 4.9 in f64, the coarse tables' first equilibrium and the rims on nodes (75
 # of its 183 s).

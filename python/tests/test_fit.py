@@ -647,71 +647,58 @@ def test_known_wrong_answers(name, args, seed, opts, arith):
 
 # helper-80 (stop 76; docs/fitting.md "Known defects"): pinned tops missed or
 # cut short in instrument-like curves, silent wrong answers; each a
-# jkr_curves curve, what the instrument does to it, and the fit's options
-# (f64). Strict xfail, as KNOWN_WRONG.
-def _h80_quantised():
-    """an ADC step of 3e-6 pull-off forces on a curve with hysteresis"""
-    z, F, Fc = jkr_curves.curve(4.181937063688731e-07, 9289027980.139282, 0.013127881426942021,
-                                0.005298155229193303, 0.18128919613903974, 167, 1.6170172194168544,
-                                0.6043846583364665, 0.0)
+# jkr_curves.curve (R, E, w, w_adv, k, n, top, free, noise), its keyword
+# arguments, what the instrument does to it (flaw(z, F, Fc) -> z, F) and the
+# fit's options (f64). Strict xfail, as KNOWN_WRONG.
+def _quantised(z, F, Fc):
+    """an ADC step of 3e-6 pull-off forces"""
     q = 3.0548911303694618e-06 * abs(Fc)
     return z, np.round(F / q) * q
 
 
-def _h80_outlier():
+def _outlier(z, F, Fc):
     """one sample of the pinned top 0.14 pull-off forces low"""
-    z, F, Fc = jkr_curves.curve(1.5794778036675073e-08, 26394118.893559154, 0.3568266808973725,
-                                0.025503097127587276, 0.05908202316917645, 982, 4.440482231498521,
-                                0.42474765538482573, 0.003569369419635753, seed=342)
+    F = F.copy()
     F[1070] -= 0.1391 * abs(Fc)
     return z, F
 
 
-def _h80_drift():
+def _drift(z, F, Fc):
     """a baseline drifting linearly in time, 0.06 % of the pull-off force over the cycle"""
-    z, F, Fc = jkr_curves.curve(6.531729339699188e-07, 34091866.83759898, 0.0634612993982725,
-                                0.05837037679800404, 2.2801082661423484, 1566, 2.4398801183863963,
-                                0.4033229526814466, 0.0003687014850187292, seed=85)
     return z, F - 0.0006209327136782898 * abs(Fc) * np.arange(F.size) / (F.size - 1)
 
 
-def _h80_offset():
-    """noise-free, a 5 um piezo offset (0, 2, 10 and 15 um are fitted exactly)"""
-    z, F, _ = jkr_curves.curve(1.5439963038965335e-08, 3662565996.230533, 0.0023497089766510277,
-                               0.0005767187289244071, 0.017724242256548724, 112, 1.7825228296845663,
-                               0.8008566345382027, 0.0, z0=5e-6)
-    return z, F
-
-
-def _h80_tiny_contact():
-    """noise-free, 7 samples in contact (5 pinned): too few for the straight start"""
-    z, F, _ = jkr_curves.curve(1.3306971991886335e-07, 23121456.508901328, 0.4377028473271046,
-                               0.03280656094481652, 0.11655192668925304, 100, 2.908045613617874,
-                               15.268032760009259, 0.0, seed=68)
+def _as_is(z, F, Fc):
     return z, F
 
 
 KNOWN_WRONG_H80 = [
-    ("quantised", _h80_quantised, (4.181937063688731e-07, 9289027980.139282, 0.013127881426942021,
-                                   0.005298155229193303, 0.18128919613903974), {}),
-    ("outlier", _h80_outlier, (1.5794778036675073e-08, 26394118.893559154, 0.3568266808973725,
-                               0.025503097127587276, 0.05908202316917645), {}),
-    ("drift", _h80_drift, (6.531729339699188e-07, 34091866.83759898, 0.0634612993982725, 0.05837037679800404,
-                           2.2801082661423484), dict(approach=True)),
-    ("offset", _h80_offset, (1.5439963038965335e-08, 3662565996.230533, 0.0023497089766510277,
-                             0.0005767187289244071, 0.017724242256548724), {}),
-    ("tiny_contact", _h80_tiny_contact, (1.3306971991886335e-07, 23121456.508901328, 0.4377028473271046,
-                                         0.03280656094481652, 0.11655192668925304), {}),
+    ("quantised", (4.181937063688731e-07, 9289027980.139282, 0.013127881426942021, 0.005298155229193303,
+                   0.18128919613903974, 167, 1.6170172194168544, 0.6043846583364665, 0.0), {}, _quantised, {}),
+    ("outlier", (1.5794778036675073e-08, 26394118.893559154, 0.3568266808973725, 0.025503097127587276,
+                 0.05908202316917645, 982, 4.440482231498521, 0.42474765538482573, 0.003569369419635753),
+     dict(seed=342), _outlier, {}),
+    ("drift", (6.531729339699188e-07, 34091866.83759898, 0.0634612993982725, 0.05837037679800404,
+               2.2801082661423484, 1566, 2.4398801183863963, 0.4033229526814466, 0.0003687014850187292),
+     dict(seed=85), _drift, dict(approach=True)),
+    # noise-free, a 5 um piezo offset (0, 2, 10 and 15 um are fitted exactly)
+    ("offset", (1.5439963038965335e-08, 3662565996.230533, 0.0023497089766510277, 0.0005767187289244071,
+                0.017724242256548724, 112, 1.7825228296845663, 0.8008566345382027, 0.0),
+     dict(z0=5e-6), _as_is, {}),
+    # noise-free, 7 samples in contact (5 pinned): too few for the straight start
+    ("tiny_contact", (1.3306971991886335e-07, 23121456.508901328, 0.4377028473271046, 0.03280656094481652,
+                      0.11655192668925304, 100, 2.908045613617874, 15.268032760009259, 0.0),
+     dict(seed=68), _as_is, {}),
 ]
 
 
-@pytest.mark.parametrize("name,make,par,opts", KNOWN_WRONG_H80, ids=[c[0] for c in KNOWN_WRONG_H80])
+@pytest.mark.parametrize("name,args,kw,flaw,opts", KNOWN_WRONG_H80, ids=[c[0] for c in KNOWN_WRONG_H80])
 @pytest.mark.xfail(strict=True, reason="known defect (helper-80, stop 76): a silent wrong answer")
-def test_known_wrong_helper80(name, make, par, opts):
+def test_known_wrong_helper80(name, args, kw, flaw, opts):
     """An answer within PULL reported errors (E*, w and, with the approach,
     w_adv), or a named refusal."""
-    R, E, w, w_adv, k = par
-    z, F = make()
+    R, E, w, w_adv, k = args[:5]
+    z, F = flaw(*jkr_curves.curve(*args, **kw))
     try:
         r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k, **opts)
     except mdr.Error:
