@@ -129,7 +129,8 @@
  *     PINOFF_N = 112 samples, z0 = 0 to 20 um in PINOFF_STEP = 0.25 um;
  *     the host's, left out on the M4F, mk/fit.mk): every fit answered, E* and w within
  *     PINOFF_REL = 1e-8 of the truth and n_pinned the curve's (measured:
- *     486 fits, worst 6e-11; before stop 77's fix of mdr_f_line 65 of the
+ *     486 fits, worst 6e-11; f64 only, f32's line is as it was: mdr_f_line;
+ *     before stop 77's fix of mdr_f_line 65 of the
  *     40 N/m lever's refused MDR_E_MISFIT, and helper-80's closed-form
  *     curve answered E* 1.39 x, w 21 errors off at 5 um).
  *   a step or glitch in the free tail (test_tail_step, host only): a
