@@ -133,6 +133,18 @@
  *     before stop 77's fix of mdr_f_line 65 of the
  *     40 N/m lever's refused MDR_E_MISFIT, and helper-80's closed-form
  *     curve answered E* 1.39 x, w 21 errors off at 5 um).
+ *   a glitch in a noisy pinned top (test_pinned_glitch, host only: the
+ *     three regimes, w_adv = w/2, the top at 2.5 fold radii, 400 samples,
+ *     noise GLITCH_SIG = 0.3 % of the pull-off force, 3 seeds; one sample
+ *     of the pinned top moved by -0.3, -0.14, -0.05 and +0.14 pull-off
+ *     forces, at every 6th sample from the 5th to 3 before its end): each
+ *     fit has the status of the same curve without the glitch, and every
+ *     answer lies within GLITCH_PULL = 5 reported errors (test_noise's
+ *     rule; measured: 420 fits, 384 answered, worst 2.6 errors). Before
+ *     stop 77's glitch rule (mdr_f_line) the straight start ended at the
+ *     glitch and 195 of the 420 changed status: 81 (1 N/m lever) and 78
+ *     (40 N/m) refused MDR_E_MISFIT where the curve without the glitch is
+ *     answered, 36 (0.2 N/m) answered where it is refused MDR_E_PINNED.
  *   a step or glitch in the free tail (test_tail_step, host only): a
  *     tether of 10 or 20 % of the pull-off force over 60 % of the free
  *     samples, or one glitch sample of half or all of it, noise 0.3 %,
@@ -292,6 +304,9 @@ MDR_TEST_NOT_APPLICABLE("the fit, f32, f64 and every profile")
 #else
 #define NF32PIN 6
 #endif
+/* a glitch in a noisy pinned top (test_pinned_glitch) */
+#define GLITCH_SIG 3e-3 /* noise, of the pull-off force */
+#define GLITCH_PULL 5.0 /* every answer within this many reported errors */
 /* f64, noise-free pinned tops at piezo offsets (test_pinned_offset_clean) */
 #define PINOFF_REL 1e-8
 #define PINOFF_STEP 0.25e-6
@@ -2597,6 +2612,66 @@ static void test_pinned_offset_clean(void **state)
                   worst_rel);
 }
 
+#ifndef MDR_TARGET_TEST
+/* One glitch in a noisy pinned top (helper-80, stop 76: one sample 14 % of
+ * the pull-off force low ended the straight start, mdr_f_line, and the fit
+ * from there took the rest of the pinned top in: E* 1.12 x at 6.7 errors,
+ * n_pinned 88 of 581, status ok). The rule: at the top of the file. */
+static void test_pinned_glitch(void **state)
+{
+    static const double sizes[4] = {-0.3, -0.14, -0.05, 0.14};
+    const int n = 400;
+    int r, s, g, pos, npin, n_all = 0, n_ok = 0;
+    double worst_dev = 0.0;
+    (void)state;
+    noise_state = 0x3c6ef372fe94f82bull;
+    for (r = 0; r < 3; r++) {
+        const jkr_par *p = &regimes[r];
+        const mdr_contact_f64 c = paraboloid64(p->R);
+        for (s = 0; s < 3; s++) {
+            static double Fn[400];
+            double Fpo;
+            mdr_status st0;
+            mdr_fit_opts_f64 o;
+            mdr_fit_result_f64 res;
+            int i;
+            pinned_curve(p, 0.5 * p->w, 2.5 * jkr_fold(p), 2e-6, 0.0, n, zs, Fn, &npin, &Fpo);
+            for (i = 0; i < n; i++) {
+                Fn[i] += GLITCH_SIG * fabs(Fpo) * gauss();
+            }
+            mdr_fit_defaults_f64(&o, p->km);
+            memcpy(Fs, Fn, sizeof Fn);
+            st0 = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &res);
+            for (g = 0; g < 4; g++) {
+                for (pos = 4; pos < npin - 3; pos += 6) {
+                    mdr_status st;
+                    memcpy(Fs, Fn, sizeof Fn);
+                    Fs[pos] += sizes[g] * fabs(Fpo);
+                    st = mdr_fit_curve_f64(&c, &o, zs, Fs, (uint32_t)n, work64, 2 * NMAX, &res);
+                    n_all++;
+                    if (st != st0) {
+                        fail_msg("regime %d, seed %d: a glitch of %g pull-off forces at pinned sample %d of %d: %s, "
+                                 "without it %s", r, s, sizes[g], pos, npin, mdr_status_str(st), mdr_status_str(st0));
+                    }
+                    if (st == MDR_OK) {
+                        const double dev = fmax(nerr(res.E, p->E, res.E_err), nerr(res.w, p->w, res.w_err));
+                        n_ok++;
+                        worst_dev = fmax(worst_dev, dev);
+                        if (dev > GLITCH_PULL) {
+                            fail_msg("regime %d, seed %d: a glitch of %g pull-off forces at pinned sample %d of %d: "
+                                     "E* %.4g x, w %.4g x, %.1f reported errors off, n_pinned %u", r, s, sizes[g], pos,
+                                     npin, res.E / p->E, res.w / p->w, dev, (unsigned)res.n_pinned);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    print_message("a glitch in a noisy pinned top: %d fits, each with the status of its curve without the glitch; "
+                  "%d answered, worst %.2f errors\n", n_all, n_ok, worst_dev);
+}
+#endif
+
 #ifndef MDR_TARGET_TEST /* (the host's: f64 as the target's, whose f32 fit is the same code) */
 /* ---- flaws of measured curves (stop 39) --------------------------------
  * Found by a helper attacking the fit through `mdr fit` with curves flawed
@@ -4277,6 +4352,9 @@ int main(void)
         FIT_TEST(test_reversed_baseline_step),
         FIT_TEST(test_f32_pinned_offset),
         FIT_TEST(test_pinned_offset_clean),
+#ifndef MDR_TARGET_TEST
+        FIT_TEST(test_pinned_glitch),
+#endif
 #ifndef MDR_TARGET_TEST
         FIT_TEST(test_tail_step),
         FIT_TEST(test_tail_glitch_clean),

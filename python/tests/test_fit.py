@@ -656,13 +656,6 @@ def _quantised(z, F, Fc):
     return z, np.round(F / q) * q
 
 
-def _outlier(z, F, Fc):
-    """one sample of the pinned top 0.14 pull-off forces low"""
-    F = F.copy()
-    F[1070] -= 0.1391 * abs(Fc)
-    return z, F
-
-
 def _drift(z, F, Fc):
     """a baseline drifting linearly in time, 0.06 % of the pull-off force over the cycle"""
     return z, F - 0.0006209327136782898 * abs(Fc) * np.arange(F.size) / (F.size - 1)
@@ -675,9 +668,6 @@ def _as_is(z, F, Fc):
 KNOWN_WRONG_H80 = [
     ("quantised", (4.181937063688731e-07, 9289027980.139282, 0.013127881426942021, 0.005298155229193303,
                    0.18128919613903974, 167, 1.6170172194168544, 0.6043846583364665, 0.0), {}, _quantised, {}),
-    ("outlier", (1.5794778036675073e-08, 26394118.893559154, 0.3568266808973725, 0.025503097127587276,
-                 0.05908202316917645, 982, 4.440482231498521, 0.42474765538482573, 0.003569369419635753),
-     dict(seed=342), _outlier, {}),
     ("drift", (6.531729339699188e-07, 34091866.83759898, 0.0634612993982725, 0.05837037679800404,
                2.2801082661423484, 1566, 2.4398801183863963, 0.4033229526814466, 0.0003687014850187292),
      dict(seed=85), _drift, dict(approach=True)),
@@ -727,6 +717,39 @@ def test_pinned_offset_clean():
         worst = max(worst, abs(r.E / E - 1), abs(r.w / w - 1))
         pinned.add(r.n_pinned)
         assert worst <= OFFSET_REL and pinned == {43}, (i * 0.25, r.E / E, r.w / w, r.n_pinned)
+
+
+# helper-80's curve whose pinned top one glitch cut short (E* 1.12 x at 6.7
+# errors, n_pinned 88 of 581; fixed at stop 77: mdr_f_line leaves out a
+# sample off the line whose next two lie on it)
+H80_GLITCH = (1.5794778036675073e-08, 26394118.893559154, 0.3568266808973725, 0.025503097127587276,
+              0.05908202316917645, 982, 4.440482231498521, 0.42474765538482573, 0.003569369419635753)
+
+
+def test_pinned_glitch():
+    """helper-80's noisy curve with one sample of its pinned top moved by
+    -0.3, -0.14, +0.05, +0.14 pull-off forces, at every 8th sample from the
+    9th of the retract to the 201st (a glitch among the top's first 5
+    samples is still a known defect: the line has too few samples to tell
+    it): every answer within PULL reported errors, and at least 90 %
+    answered."""
+    R, E, w, _, k = H80_GLITCH[:5]
+    z, F0, Fc = jkr_curves.curve(*H80_GLITCH, seed=342)
+    top = F0.size // 2
+    answered = worst = 0
+    cases = [(pos, size) for pos in range(top + 8, top + 201, 8) for size in (0.3, 0.14, -0.05, -0.14)]
+    for pos, size in cases:
+        F = F0.copy()
+        F[pos] -= size * abs(Fc)
+        try:
+            r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
+        except mdr.Error:
+            continue
+        answered += 1
+        dev = max(abs(r.E - E) / r.E_err, abs(r.w - w) / r.w_err)
+        worst = max(worst, dev)
+        assert dev <= PULL, (pos - top, size, r.E / E, r.w / w, dev, r.n_pinned)
+    assert 10 * answered >= 9 * len(cases), (answered, len(cases))
 
 
 def test_f32_checked_against_f64(tmp_path, cli):
