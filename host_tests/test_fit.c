@@ -2619,8 +2619,8 @@ static void test_pinned_offset_clean(void **state)
  * n_pinned 88 of 581, status ok). The rule: at the top of the file. */
 static void test_pinned_glitch(void **state)
 {
+    enum { n = 400 };
     static const double sizes[4] = {-0.3, -0.14, -0.05, 0.14};
-    const int n = 400;
     int r, s, g, pos, npin, n_all = 0, n_ok = 0;
     double worst_dev = 0.0;
     (void)state;
@@ -2629,7 +2629,7 @@ static void test_pinned_glitch(void **state)
         const jkr_par *p = &regimes[r];
         const mdr_contact_f64 c = paraboloid64(p->R);
         for (s = 0; s < 3; s++) {
-            static double Fn[400];
+            static double Fn[n];
             double Fpo;
             mdr_status st0;
             mdr_fit_opts_f64 o;

@@ -12,9 +12,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import jkr_curves  # noqa: E402
 import mdr  # noqa: E402
-
-CURVE = (1.5794778036675073e-08, 26394118.893559154, 0.3568266808973725, 0.025503097127587276,
-         0.05908202316917645, 982, 4.440482231498521, 0.42474765538482573, 0.003569369419635753)
+from test_fit import H80_GLITCH as CURVE  # noqa: E402  (the curve of test_pinned_glitch)
 
 
 def main():
