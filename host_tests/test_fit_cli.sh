@@ -100,6 +100,19 @@ for drag in 9.4e-12 -4.7e-11 -9.4e-11; do
         done
     done
 done
+# the CLI's own curve as it writes it (stop 78): `mdr cycle` in its default
+# f32 prints 9 significant digits; a noise-free pinned top (w_adv = w/2)
+# in those digits ended the fit's straight start at the first sample the
+# rounding moved beyond the arithmetic's, and `mdr fit` refused its own
+# demo's kind of curve MDR_E_MISFIT (docs/fitting.md, "Curves as written
+# down"): now E* and w within 5 errors, the pinned top found
+"$MDR" cycle $TIP --E 1e9 --w 0.05 --w-adv 0.025 --control machine --k-machine 0.2 --path -2e-8,1e-8,-6e-8 \
+    --steps-per-segment 400 2>/dev/null | awk -F, 'NR == 1 { print "z,F"; next } { print $2 "," $4 }' > "$TMP/w9.csv"
+out=$("$MDR" fit --curve "$TMP/w9.csv" $TIP --k-machine 0.2) && ok || bad "9 digits: exit: $out"
+awk -v E="$(key "$out" E)" -v e="$(key "$out" E_err)" -v w="$(key "$out" w)" -v we="$(key "$out" w_err)" \
+    -v np="$(key "$out" n_pinned)" \
+    'BEGIN { exit !((E - 1e9 < 5 * e && 1e9 - E < 5 * e) && (w - 0.05 < 5 * we && 0.05 - w < 5 * we) && np > 100) }' &&
+    ok || bad "9 digits: E*, w within 5 errors, the pinned top found: $out"
 # drift linear in time (a helper's curve, stop 40): 1 % of the pull-off
 # force over the cycle, noise 0.3 %, 60 nm of free path: it tilts the two
 # branches' baselines apart, and the approach's free slope, which the fit
