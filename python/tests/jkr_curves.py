@@ -62,10 +62,13 @@ def _a_at(zp, R, E, w, k, lo, hi):
     return _bisect(lambda a: _zp(a, R, E, w, k) - zp, np.full(zp.shape, lo), np.full(zp.shape, hi))
 
 
-def curve(R, E, w, w_adv, k, n, top, free, noise, z0=2e-6, Fb=0.0, tilt=0.0, seed=0):
+def curve(R, E, w, w_adv, k, n, top, free, noise, z0=2e-6, Fb=0.0, tilt=0.0, seed=0, snap=None):
     """n samples each way, in time order (approach, then retract). top: the
     largest force in units of the pull-off force |F_c|; free: the free
-    path below the pull-off in units of the contact part's span. Returns
+    path below the pull-off in units of the contact part's span. snap: a
+    function that moves the approach's base positions z (absolute, the
+    same reversed for the retract) to the exact ones the curve is computed
+    at (a piezo's decimal grid); the top then the last of them. Returns
     z, F and the pull-off force F_c (negative)."""
     ac = _fold(R, E, w, k)
     zc, Fc = float(_zp(ac, R, E, w, k)), float(_F(ac, R, E, w))
@@ -77,10 +80,15 @@ def curve(R, E, w, w_adv, k, n, top, free, noise, z0=2e-6, Fb=0.0, tilt=0.0, see
     at = float(_bisect(lambda a: _F(a, R, E, w_adv) - top * abs(Fc), max(a0, aa, 1e-30), hi))
     zt = float(_zp(at, R, E, w_adv, k))
     zpa = np.linspace(zc - free * (zt - zc), zt, n)
+    if snap is not None:
+        zpa = snap(zpa + z0) - z0
+        zt = float(zpa[-1])
     zpr = zpa[::-1].copy()
     Fa, Fr = np.zeros(n), np.zeros(n)
     on = zpa >= 0
     Fa[on] = _F(_a_at(zpa[on], R, E, w_adv, k, max(aa, 1e-30), at * (1 + 1e-7)), R, E, w_adv)
+    if snap is not None:
+        at = float(_a_at(np.array([zt]), R, E, w_adv, k, max(aa, 1e-30), at * (1 + 1e-7))[0])
     if w_adv < w:  # pinned at a_t down to the branch of w (or to the fold)
         zend = float(_zp(at, R, E, w, k))
         S = 2 * E * at
