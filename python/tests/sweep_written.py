@@ -18,13 +18,10 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import jkr_curves  # noqa: E402
 import mdr  # noqa: E402
+from test_fit import _written as written  # noqa: E402  (as test_written_curve writes them)
 
 CASES = (("grid", 1e-6), ("grid", 1e-5), ("grid", 1e-4), ("grid", 1e-3), ("digits", 5), ("digits", 6),
          ("digits", 7), ("digits", 9), ("digits", 12), ("digits", 15), ("digits", 17))
-
-
-def written(x, digits):
-    return np.array([float("%.*e" % (digits - 1, v)) for v in x])
 
 
 def main():
