@@ -146,6 +146,17 @@
  *     stop 78's mdr_f_written 3 of the first 48, the rest refused: the
  *     rounding ended the pinned top's straight start; without F's digits,
  *     mdr_f_decimal, 49).
+ *   z on a piezo's decimal grid (test_written_irregular, host only: three
+ *     stiff contacts through soft levers, w_adv = w/4 and w/2, the top at
+ *     2.5 fold radii, piezo offsets 1.3, 4.7 and 9.1 um, each position
+ *     moved down to a whole unit 0, 1 or 2 digits below the mean step's
+ *     leading one): with F computed there (z exact, its steps irregular),
+ *     160 samples, every curve within PINOFF_REL of the truth with n_pinned
+ *     within 1 (measured: 54 of 54, worst 7.1e-13; before stop 79's
+ *     mdr_f_zexact 18 of the first 36 off, E* to 1.009 x, w to 0.957 x,
+ *     n_pinned 0); with F at the positions before rounding (a file's
+ *     rounding of z), 400 samples, every answer within DIGITS_PULL errors
+ *     (measured: 18 answered, worst 1.92; the rest refused).
  *   a glitch in a noisy pinned top (test_pinned_glitch, host only: the
  *     three regimes, w_adv = w/2, the top at 2.5 fold radii, 400 samples,
  *     noise GLITCH_SIG = 0.3 % of the pull-off force, 3 seeds; one sample
@@ -2716,18 +2727,19 @@ static void test_written_digits(void **state)
 
 #ifndef MDR_TARGET_TEST
 /* Noise-free curves whose z lie on a piezo's decimal grid with irregular
- * steps (each position moved down to a whole unit of a digit below the
- * mean step's leading one, so the steps differ by a unit; F computed at
- * them), which mdr_f_written took for a file's rounding of z before
+ * steps (each position moved down to a whole unit 0, 1 or 2 digits below
+ * the mean step's leading one, so the steps differ by a unit; F computed
+ * at them), which mdr_f_written took for a file's rounding of z before
  * mdr_f_zexact (stop 79): the straight start took in the receding branch's
  * first samples where a stiff contact meets a soft lever (a sweep of such
- * curves: E* up to 1.6 x at up to 32 errors, n_pinned 0, status ok). The
- * three regimes, w_adv = w/4 and w/2, units 1 and 2 digits below the
- * step's leading one, piezo offsets 1.3 to 9.1 um: every curve answered
- * within PINOFF_REL of the truth with n_pinned within 1 of the curve's. */
+ * curves: E* up to 1.6 x at up to 32 errors, n_pinned 0, status ok). Three
+ * stiff contacts, w_adv = w/4 and w/2, piezo offsets 1.3 to 9.1 um: every
+ * curve answered within PINOFF_REL of the truth with n_pinned within 1 of
+ * the curve's; and the same positions as a file's rounding of z: the
+ * tolerances at the top of the file. */
 static void test_written_irregular(void **state)
 {
-    enum { n = 160 };
+    enum { n = 160, nr = 400 };
     static const double ratios[2] = {0.25, 0.5}, offs[3] = {1.3e-6, 4.7e-6, 9.1e-6};
     static const jkr_par stiff[3] = {
         {1.24e-7, 9.5e9, 0.041, 0.27},
@@ -2741,7 +2753,7 @@ static void test_written_irregular(void **state)
         const jkr_par *p = &stiff[g];
         mdr_contact_f64 c = paraboloid64(p->R);
         for (k = 0; k < 2; k++) {
-            for (u = 0; u < 2; u++) {
+            for (u = 0; u < 3; u++) {
                 for (o = 0; o < 3; o++) {
                     mdr_fit_opts_f64 fo;
                     mdr_fit_result_f64 r;
@@ -2749,7 +2761,7 @@ static void test_written_irregular(void **state)
                     mdr_status st;
                     pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, n, zs, Fs, &npin, &Fpo);
                     step = (zs[0] - zs[n - 1]) / (n - 1);
-                    curve_ue = (int)floor(log10(step)) - 1 - u;
+                    curve_ue = (int)floor(log10(step)) - u;
                     pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, n, zs, Fs, &npin, &Fpo);
                     curve_ue = 0;
                     mdr_fit_defaults_f64(&fo, p->km);
@@ -2775,11 +2787,12 @@ static void test_written_irregular(void **state)
     print_message("irregular decimal z: %d of %d within %.0e with their pinned tops, worst %.2g relative\n",
                   nfit - nbad, nfit, PINOFF_REL, worst_rel);
     assert_int_equal(nbad, 0);
-    /* the same positions rounded (F at the positions before: a file's
-     * rounding, which mdr_f_zexact must not take for exact z): answered
-     * within DIGITS_PULL errors (the pinned top's end within the rounding:
-     * n_pinned a few samples off), or refused MDR_E_MISFIT,
-     * MDR_E_DEGENERATE or MDR_E_FEW */
+    /* nr samples at positions rounded the same (F at the positions before:
+     * a file's rounding, which mdr_f_zexact must not take for exact z):
+     * answered within DIGITS_PULL errors (the pinned top's end within the
+     * rounding: n_pinned a few samples off) or refused (measured: 18 of 54
+     * answered, worst 1.92 errors; with the cubic's tolerance 8 times
+     * wider, rounded z taken as exact, 6 of 18 beyond 5 errors) */
     nfit = nbad = 0;
     worst_rel = 0.0;
     curve_rounded = true;
@@ -2787,24 +2800,24 @@ static void test_written_irregular(void **state)
         const jkr_par *p = &stiff[g];
         mdr_contact_f64 c = paraboloid64(p->R);
         for (k = 0; k < 2; k++) {
-            for (u = 0; u < 2; u++) {
+            for (u = 0; u < 3; u++) {
                 for (o = 0; o < 3; o++) {
                     mdr_fit_opts_f64 fo;
                     mdr_fit_result_f64 r;
                     double Fpo, dev, step;
                     mdr_status st;
-                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, n, zs, Fs, &npin, &Fpo);
-                    step = (zs[0] - zs[n - 1]) / (n - 1);
-                    curve_ue = (int)floor(log10(step)) - 1 - u;
-                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, n, zs, Fs, &npin, &Fpo);
+                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, nr, zs, Fs, &npin, &Fpo);
+                    step = (zs[0] - zs[nr - 1]) / (nr - 1);
+                    curve_ue = (int)floor(log10(step)) - u;
+                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, nr, zs, Fs, &npin, &Fpo);
                     curve_ue = 0;
                     mdr_fit_defaults_f64(&fo, p->km);
-                    st = mdr_fit_curve_f64(&c, &fo, zs, Fs, n, work64, 2 * NMAX, &r);
-                    if (st == MDR_E_MISFIT || st == MDR_E_DEGENERATE || st == MDR_E_FEW) {
-                        continue;
+                    st = mdr_fit_curve_f64(&c, &fo, zs, Fs, nr, work64, 2 * NMAX, &r);
+                    if (st != MDR_OK) {
+                        continue; /* (a refusal names its reason) */
                     }
                     nfit++;
-                    dev = st == MDR_OK ? fmax(fabs(r.E - p->E) / r.E_err, fabs(r.w - p->w) / r.w_err) : 1e300;
+                    dev = fmax(fabs(r.E - p->E) / r.E_err, fabs(r.w - p->w) / r.w_err);
                     if (!(dev <= DIGITS_PULL)) {
                         print_error("rounded: contact %d, w_adv %.2f w, unit %d, z0 %g: %s, %.2f errors, n_pinned %u of %d\n",
                                     g, ratios[k], u, offs[o], mdr_status_str(st), dev, (unsigned)r.n_pinned, npin);
