@@ -838,6 +838,66 @@ def test_written_irregular(case):
         r.E / E, r.w / w, r.n_pinned, binary.n_pinned)
 
 
+# helper-83 (stop 79): z rounded by a file to whole units of a few digits
+# whose rounding errors vary linearly over most of the curve (a grid's
+# steps near a whole number of units with rows lost; an uneven grid scaled
+# by a few units over its span), F at the positions before. F is a smooth
+# function of the z written but where the errors wrap, and mdr_f_zexact
+# takes such z for exact (its uneven steps come from the positions, not
+# the rounding): answered off with status ok where f81244a refused (47 of
+# 7 500 of the helper's curves; 40 refused before). The reported errors
+# do not include z's written precision; known defect (docs/fitting.md).
+H83 = [  # (R, E, w, w_adv, k, n, top, free), kind, down, (phase, phase2, wraps) or (delta, phase, p, dropseed)
+    ((7.875887233871767e-08, 20818662451.856304, 0.04293499721508571, 0.021467498607542854, 0.25540310280160855, 980,
+      1.7249572590970275, 1.2985833146918482), 474682247, "drift", 2,
+     (0.07815235138305454, 0.03754733955187606, -7.806013693322661)),
+    ((1.9616905935774065e-07, 5222287908.101501, 0.037268813397865426, 0.0, 0.071710210908473, 411,
+      3.4653444591083344, 1.0143840836426683), 63033670, "lost", 2,
+     (-0.00024255186989286562, 0.24083164574898752, 0.061501947719779425, 174228027)),
+]
+
+
+def _h83_curve(args, seed, kind, down, q):
+    """helper-83's curve: true positions (a drifted whole-unit grid, or a
+    progression near a whole number of units), z rounded to the unit as a
+    file in m, rows lost at random (never the ends or the top)"""
+    n = args[5]
+    st = {}
+
+    def snap(za):
+        zn = za * 1e9
+        e = math.floor(math.log10((zn[-1] - zn[0]) / (n - 1))) - down
+        st["e"], u = e, 10.0 ** e
+        if kind == "drift":
+            g = (np.floor(zn / u + q[0]) - 1) * u
+            return (g + q[2] * u / (g[-1] - g[0]) * (g - g[-1]) - q[1] * u) * 1e-9
+        s = (max(1, math.ceil((za[-1] - za[0]) / (n - 1) / (u * 1e-9))) + q[0]) * u * 1e-9
+        return (za[-1] - q[1] * u * 1e-9) - (n - 1 - np.arange(n)) * s
+    z, F, _ = jkr_curves.curve(*args, 0.0, z0=0.0, Fb=0.1, seed=seed, snap=snap)
+    e = st["e"]
+    z = np.array([float("%de%d" % (int(v), e - 9)) for v in np.round(z * 1e9 / 10.0 ** e)])
+    if kind == "lost":
+        sel = np.random.default_rng(q[3]).uniform(size=z.size) < q[2]
+        sel[[0, n - 2, n - 1, n, n + 1, 2 * n - 1]] = False
+        z, F = z[~sel], F[~sel]
+    return z, F
+
+
+@pytest.mark.xfail(strict=True, reason="known defect: z's written precision not in the reported errors (helper-83)")
+@pytest.mark.parametrize("case", range(len(H83)))
+def test_written_drift(case):
+    """answered within PULL reported errors, or refused"""
+    args, seed, kind, down, q = H83[case]
+    R, E, w, k = args[0], args[1], args[2], args[4]
+    z, F = _h83_curve(args, seed, kind, down, q)
+    try:
+        r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
+    except mdr.Error:
+        return
+    dev = max(abs(r.E - E) / r.E_err, abs(r.w - w) / r.w_err)
+    assert dev <= PULL, (r.E / E, r.w / w, dev, r.n_pinned)
+
+
 # helper-80's noise-free curve that a 5 um piezo offset turned into a wrong
 # answer (E* 1.39 x, w 21 errors off, n_pinned 0; exact at 0, 2, 10 and
 # 15 um): z's rounding broke the pinned top's straight start (fixed at stop
