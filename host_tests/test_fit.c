@@ -2737,55 +2737,61 @@ static void test_written_digits(void **state)
  * curve answered within PINOFF_REL of the truth with n_pinned within 1 of
  * the curve's; and the same positions as a file's rounding of z: the
  * tolerances at the top of the file. */
+/* test_written_irregular's curve of n samples, fitted: pinned_curve's
+ * positions moved down to whole units `down` digits below the mean step's
+ * leading one, F at them (rounded false) or at the positions before */
+static mdr_status irregular_fit(const jkr_par *p, double wadv, double z0, int n, int down, bool rounded, int *npin,
+                                mdr_fit_result_f64 *r)
+{
+    const mdr_contact_f64 c = paraboloid64(p->R);
+    mdr_fit_opts_f64 fo;
+    double Fpo;
+    pinned_curve(p, wadv, 2.5 * jkr_fold(p), z0, 0.0, n, zs, Fs, npin, &Fpo);
+    curve_ue = (int)floor(log10((zs[0] - zs[n - 1]) / (n - 1))) - down;
+    curve_rounded = rounded;
+    pinned_curve(p, wadv, 2.5 * jkr_fold(p), z0, 0.0, n, zs, Fs, npin, &Fpo);
+    curve_ue = 0;
+    curve_rounded = false;
+    mdr_fit_defaults_f64(&fo, p->km);
+    return mdr_fit_curve_f64(&c, &fo, zs, Fs, (uint32_t)n, work64, 2 * NMAX, r);
+}
+
 static void test_written_irregular(void **state)
 {
-    enum { n = 160, nr = 400 };
+    enum { n = 160, nr = 400, ncase = 3 * 2 * 3 * 3 };
     static const double ratios[2] = {0.25, 0.5}, offs[3] = {1.3e-6, 4.7e-6, 9.1e-6};
     static const jkr_par stiff[3] = {
         {1.24e-7, 9.5e9, 0.041, 0.27},
         {7.5e-8, 1.42e10, 0.040, 0.37},
         {3.2e-8, 1.34e10, 0.076, 0.22},
     };
-    int g, k, u, o, npin, nfit = 0, nbad = 0;
-    double worst_rel = 0.0;
+    int i, npin, nfit = 0, nbad = 0;
+    double worst = 0.0;
     (void)state;
-    for (g = 0; g < 3; g++) {
+    /* (case i: contact g, w_adv ratios[k], unit u digits down, offset o) */
+#define IRR_CASE const int g = i / 18, k = i / 9 % 2, u = i / 3 % 3, o = i % 3
+    for (i = 0; i < ncase; i++) {
+        IRR_CASE;
         const jkr_par *p = &stiff[g];
-        mdr_contact_f64 c = paraboloid64(p->R);
-        for (k = 0; k < 2; k++) {
-            for (u = 0; u < 3; u++) {
-                for (o = 0; o < 3; o++) {
-                    mdr_fit_opts_f64 fo;
-                    mdr_fit_result_f64 r;
-                    double Fpo, e, step;
-                    mdr_status st;
-                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, n, zs, Fs, &npin, &Fpo);
-                    step = (zs[0] - zs[n - 1]) / (n - 1);
-                    curve_ue = (int)floor(log10(step)) - u;
-                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, n, zs, Fs, &npin, &Fpo);
-                    curve_ue = 0;
-                    mdr_fit_defaults_f64(&fo, p->km);
-                    st = mdr_fit_curve_f64(&c, &fo, zs, Fs, n, work64, 2 * NMAX, &r);
-                    nfit++;
-                    if (st != MDR_OK) {
-                        print_error("contact %d, w_adv %.2f w, unit %d, z0 %g: %s\n", g, ratios[k], u, offs[o],
-                                    mdr_status_str(st));
-                        nbad++;
-                        continue;
-                    }
-                    e = fmax(fabs(r.E / p->E - 1.0), fabs(r.w / p->w - 1.0));
-                    if (!(e <= PINOFF_REL) || abs((int)r.n_pinned - npin) > 1) {
-                        print_error("contact %d, w_adv %.2f w, unit %d, z0 %g: E* %.9f x, w %.9f x, n_pinned %u of %d\n",
-                                    g, ratios[k], u, offs[o], r.E / p->E, r.w / p->w, (unsigned)r.n_pinned, npin);
-                        nbad++;
-                    }
-                    worst_rel = e > worst_rel ? e : worst_rel;
-                }
-            }
+        mdr_fit_result_f64 r;
+        const mdr_status st = irregular_fit(p, ratios[k] * p->w, offs[o], n, u, false, &npin, &r);
+        double e;
+        nfit++;
+        if (st != MDR_OK) {
+            print_error("contact %d, w_adv %.2f w, unit %d, z0 %g: %s\n", g, ratios[k], u, offs[o], mdr_status_str(st));
+            nbad++;
+            continue;
         }
+        e = fmax(fabs(r.E / p->E - 1.0), fabs(r.w / p->w - 1.0));
+        if (!(e <= PINOFF_REL) || abs((int)r.n_pinned - npin) > 1) {
+            print_error("contact %d, w_adv %.2f w, unit %d, z0 %g: E* %.9f x, w %.9f x, n_pinned %u of %d\n", g,
+                        ratios[k], u, offs[o], r.E / p->E, r.w / p->w, (unsigned)r.n_pinned, npin);
+            nbad++;
+        }
+        worst = e > worst ? e : worst;
     }
     print_message("irregular decimal z: %d of %d within %.0e with their pinned tops, worst %.2g relative\n",
-                  nfit - nbad, nfit, PINOFF_REL, worst_rel);
+                  nfit - nbad, nfit, PINOFF_REL, worst);
     assert_int_equal(nbad, 0);
     /* nr samples at positions rounded the same (F at the positions before:
      * a file's rounding, which mdr_f_zexact must not take for exact z):
@@ -2794,43 +2800,27 @@ static void test_written_irregular(void **state)
      * answered, worst 1.92 errors; with the cubic's tolerance 8 times
      * wider, rounded z taken as exact, 6 of 18 beyond 5 errors) */
     nfit = nbad = 0;
-    worst_rel = 0.0;
-    curve_rounded = true;
-    for (g = 0; g < 3; g++) {
+    worst = 0.0;
+    for (i = 0; i < ncase; i++) {
+        IRR_CASE;
         const jkr_par *p = &stiff[g];
-        mdr_contact_f64 c = paraboloid64(p->R);
-        for (k = 0; k < 2; k++) {
-            for (u = 0; u < 3; u++) {
-                for (o = 0; o < 3; o++) {
-                    mdr_fit_opts_f64 fo;
-                    mdr_fit_result_f64 r;
-                    double Fpo, dev, step;
-                    mdr_status st;
-                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, nr, zs, Fs, &npin, &Fpo);
-                    step = (zs[0] - zs[nr - 1]) / (nr - 1);
-                    curve_ue = (int)floor(log10(step)) - u;
-                    pinned_curve(p, ratios[k] * p->w, 2.5 * jkr_fold(p), offs[o], 0.0, nr, zs, Fs, &npin, &Fpo);
-                    curve_ue = 0;
-                    mdr_fit_defaults_f64(&fo, p->km);
-                    st = mdr_fit_curve_f64(&c, &fo, zs, Fs, nr, work64, 2 * NMAX, &r);
-                    if (st != MDR_OK) {
-                        continue; /* (a refusal names its reason) */
-                    }
-                    nfit++;
-                    dev = fmax(fabs(r.E - p->E) / r.E_err, fabs(r.w - p->w) / r.w_err);
-                    if (!(dev <= DIGITS_PULL)) {
-                        print_error("rounded: contact %d, w_adv %.2f w, unit %d, z0 %g: %s, %.2f errors, n_pinned %u of %d\n",
-                                    g, ratios[k], u, offs[o], mdr_status_str(st), dev, (unsigned)r.n_pinned, npin);
-                        nbad++;
-                    }
-                    worst_rel = dev > worst_rel ? dev : worst_rel;
-                }
-            }
+        mdr_fit_result_f64 r;
+        double dev;
+        if (irregular_fit(p, ratios[k] * p->w, offs[o], nr, u, true, &npin, &r) != MDR_OK) {
+            continue; /* (a refusal names its reason) */
         }
+        nfit++;
+        dev = fmax(fabs(r.E - p->E) / r.E_err, fabs(r.w - p->w) / r.w_err);
+        if (!(dev <= DIGITS_PULL)) {
+            print_error("rounded: contact %d, w_adv %.2f w, unit %d, z0 %g: %.2f errors, n_pinned %u of %d\n", g,
+                        ratios[k], u, offs[o], dev, (unsigned)r.n_pinned, npin);
+            nbad++;
+        }
+        worst = dev > worst ? dev : worst;
     }
-    curve_rounded = false;
+#undef IRR_CASE
     print_message("rounded decimal z: %d of %d answered within %.0f errors, worst %.2f\n", nfit - nbad, nfit,
-                  DIGITS_PULL, worst_rel);
+                  DIGITS_PULL, worst);
     assert_int_equal(nbad, 0);
 }
 #endif

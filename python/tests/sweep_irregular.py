@@ -23,47 +23,49 @@ from test_fit import _piezo_decimal  # noqa: E402
 
 
 def main():
-    rng = np.random.default_rng(int(sys.argv[1]) if len(sys.argv) > 1 else 3)
+    seed = int(sys.argv[1]) if len(sys.argv) > 1 else 3
     rows = {d: [0, 0, 0] for d in (-1, 0, 1, 2)}
     rounded = {d: [0, 0, 0] for d in (0, 1, 2, 3)}
+    rng = np.random.default_rng(seed)
     for i in range(100):
-        R, E, w = 10 ** rng.uniform(-7.6, -6.5), 10 ** rng.uniform(9.8, 10.4), 10 ** rng.uniform(-2.5, -1)
-        k, n = 10 ** rng.uniform(-1, -0.4), int(10 ** rng.uniform(1.9, 2.5))
-        wa = w * rng.choice((0.25, 0.5))
-        top, free, z0 = rng.uniform(1, 3), rng.uniform(0.8, 1.5), rng.uniform(0, 1e-5)
+        R, E, w, k, n, rest = _draw(rng)
         for digits in (-1, 0, 1, 2):
             snap = None if digits < 0 else _piezo_decimal(digits, rng.uniform(0, 1))
-            z, F, _ = jkr_curves.curve(R, E, w, wa, k, n, top, free, 0.0, z0=z0, Fb=0.1, seed=i, snap=snap)
-            row = rows[digits]
-            row[0] += 1
-            try:
-                r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
-            except mdr.Error:
-                row[1] += 1
-                continue
-            row[2] += _off(r, E, w)
-    rng = np.random.default_rng(int(sys.argv[1]) if len(sys.argv) > 1 else 3)
+            z, F, _ = jkr_curves.curve(R, E, w, *rest, seed=i, snap=snap)
+            _count(rows[digits], z, F, R, E, w, k)
+    rng = np.random.default_rng(seed)  # (the same curves)
     for i in range(100):
-        R, E, w = 10 ** rng.uniform(-7.6, -6.5), 10 ** rng.uniform(9.8, 10.4), 10 ** rng.uniform(-2.5, -1)
-        k, n = 10 ** rng.uniform(-1, -0.4), int(10 ** rng.uniform(1.9, 2.5))
-        wa = w * rng.choice((0.25, 0.5))
-        top, free, z0 = rng.uniform(1, 3), rng.uniform(0.8, 1.5), rng.uniform(0, 1e-5)
-        z, F, _ = jkr_curves.curve(R, E, w, wa, k, n, top, free, 0.0, z0=z0, Fb=0.1, seed=i)
+        R, E, w, k, n, rest = _draw(rng)
+        z, F, _ = jkr_curves.curve(R, E, w, *rest, seed=i)
         for digits in (0, 1, 2, 3):
             za = _piezo_decimal(digits, rng.uniform(0, 1))(z[:n])
-            row = rounded[digits]
-            row[0] += 1
-            try:
-                r = mdr.fit(np.concatenate([za, za[::-1]]), F, "paraboloid", R=R, k_machine=k)
-            except mdr.Error:
-                row[1] += 1
-                continue
-            row[2] += _off(r, E, w)
+            _count(rounded[digits], np.concatenate([za, za[::-1]]), F, R, E, w, k)
     for d, (m, refused, off) in rows.items():
         name = "binary z " if d < 0 else "exact z, unit %d down" % d
         print("%s: %d curves, %d refused, %d off beyond 5 errors and 1e-3" % (name, m, refused, off))
     for d, (m, refused, off) in rounded.items():
         print("rounded z, unit %d down: %d curves, %d refused, %d off beyond 5 errors and 1e-3" % (d, m, refused, off))
+
+
+def _draw(rng):
+    """a stiff contact through a soft lever: R, E, w, k, n and the rest of
+    jkr_curves.curve's arguments after w"""
+    R, E, w = 10 ** rng.uniform(-7.6, -6.5), 10 ** rng.uniform(9.8, 10.4), 10 ** rng.uniform(-2.5, -1)
+    k, n = 10 ** rng.uniform(-1, -0.4), int(10 ** rng.uniform(1.9, 2.5))
+    wa = w * rng.choice((0.25, 0.5))
+    top, free, z0 = rng.uniform(1, 3), rng.uniform(0.8, 1.5), rng.uniform(0, 1e-5)
+    return R, E, w, k, n, (wa, k, n, top, free, 0.0, z0, 0.1)
+
+
+def _count(row, z, F, R, E, w, k):
+    """one more curve in row (curves, refused, off)"""
+    row[0] += 1
+    try:
+        r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
+    except mdr.Error:
+        row[1] += 1
+        return
+    row[2] += _off(r, E, w)
 
 
 def _off(r, E, w):

@@ -757,16 +757,26 @@ H82_GRID = [  # (R, E, w, w_adv, k, n, top, free), z0, seed, digits below the st
 GRID_REL = 1e-8
 
 
+def _unit_exp(za, digits):
+    """the exponent (of nm) of the unit `digits` below the leading digit of
+    the mean step of the positions za [m]"""
+    zn = za * 1e9
+    return math.floor(math.log10((zn[-1] - zn[0]) / (len(zn) - 1))) - digits
+
+
+def _decimals(m, e):
+    """whole units m of 10^e nm as the doubles nearest their decimals [m]"""
+    return np.array([float("%de%d" % (int(v), e - 9)) for v in m])
+
+
 def _piezo_grid(digits):
     """a snap for jkr_curves.curve: the approach's z on a uniform grid of
     whole units (digits below the step's leading digit), each the double
     nearest its decimal"""
     def snap(za):
-        zn = za * 1e9
-        e = math.floor(math.log10((zn[-1] - zn[0]) / (len(zn) - 1))) - digits
+        zn, e = za * 1e9, _unit_exp(za, digits)
         st = max(1, round((zn[-1] - zn[0]) / (len(zn) - 1) / 10.0 ** e))
-        m = math.floor(zn[-1] / 10.0 ** e) - st * np.arange(len(zn))[::-1]
-        return np.array([float("%de%d" % (int(v), e - 9)) for v in m])
+        return _decimals(math.floor(zn[-1] / 10.0 ** e) - st * np.arange(len(zn))[::-1], e)
     return snap
 
 
@@ -817,10 +827,8 @@ def _piezo_decimal(digits, phase):
     shifts where the steps of a unit more fall), the double nearest its
     decimal; the top moves down too, so the curve stays one of w_adv"""
     def snap(za):
-        zn = za * 1e9
-        e = math.floor(math.log10((zn[-1] - zn[0]) / (len(zn) - 1))) - digits
-        m = np.floor(zn / 10.0 ** e + phase) - 1
-        return np.array([float("%de%d" % (int(v), e - 9)) for v in m])
+        e = _unit_exp(za, digits)
+        return _decimals(np.floor(za * 1e9 / 10.0 ** e + phase) - 1, e)
     return snap
 
 
@@ -865,8 +873,7 @@ def _h83_curve(args, seed, kind, down, q):
     st = {}
 
     def snap(za):
-        zn = za * 1e9
-        e = math.floor(math.log10((zn[-1] - zn[0]) / (n - 1))) - down
+        zn, e = za * 1e9, _unit_exp(za, down)
         st["e"], u = e, 10.0 ** e
         if kind == "drift":
             g = (np.floor(zn / u + q[0]) - 1) * u
@@ -875,7 +882,7 @@ def _h83_curve(args, seed, kind, down, q):
         return (za[-1] - q[1] * u * 1e-9) - (n - 1 - np.arange(n)) * s
     z, F, _ = jkr_curves.curve(*args, 0.0, z0=0.0, Fb=0.1, seed=seed, snap=snap)
     e = st["e"]
-    z = np.array([float("%de%d" % (int(v), e - 9)) for v in np.round(z * 1e9 / 10.0 ** e)])
+    z = _decimals(np.round(z * 1e9 / 10.0 ** e), e)
     if kind == "lost":
         sel = np.random.default_rng(q[3]).uniform(size=z.size) < q[2]
         sel[[0, n - 2, n - 1, n, n + 1, 2 * n - 1]] = False
