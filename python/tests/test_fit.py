@@ -755,6 +755,7 @@ H82_GRID = [  # (R, E, w, w_adv, k, n, top, free), z0, seed, digits below the st
       281, 2.218273926210215, 1.4676831609811773), 7.82847313605893e-06, 5126, 1, 9),
 ]
 GRID_REL = 1e-8
+SCALE_REL = 0.5  # test_written_irregular: E* from z scaled by one written unit, where the unit refuses
 
 
 def _unit_exp(za, digits):
@@ -835,11 +836,29 @@ def _piezo_decimal(digits, phase):
 @pytest.mark.parametrize("case", range(len(IRR_DEC)))
 def test_written_irregular(case):
     """E* and w within GRID_REL of the truth and the pinned top found, as
-    with z in binary (the same curve unsnapped)"""
+    with z in binary (the same curve unsnapped); or refused
+    MDR_E_DEGENERATE where z's written unit leaves E* undetermined (the
+    errors carry z's scale within a unit over the contact part's span, since
+    stop 80: such z cannot be told from a file's rounding that drifts,
+    test_written_drift), which the same F with z scaled by one unit over
+    that span either way confirms: no answer within SCALE_REL of E*"""
     args, z0, seed, digits, phase = IRR_DEC[case]
     R, E, w, w_adv, k, n = args[:6]
     z, F, _ = jkr_curves.curve(*args, 0.0, z0=z0, Fb=0.1, seed=seed, snap=_piezo_decimal(digits, phase))
-    r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
+    try:
+        r = mdr.fit(z, F, "paraboloid", R=R, k_machine=k)
+    except mdr.Error as ex:
+        assert ex.status == "MDR_E_DEGENERATE", ex
+        unit = 10.0 ** _unit_exp(z[:n], digits) * 1e-9
+        jump = n + int(np.argmin(F[n:]))
+        for s in (-1, 1):
+            zs = z[jump] + (z - z[jump]) * (1 + s * unit / (z[n] - z[jump]))
+            try:
+                rs = mdr.fit(zs, F, "paraboloid", R=R, k_machine=k)
+            except mdr.Error:
+                continue
+            assert abs(rs.E / E - 1) > SCALE_REL, (s, rs.E / E)
+        return
     zb, Fb_, _ = jkr_curves.curve(*args, 0.0, z0=z0, Fb=0.1, seed=seed)
     binary = mdr.fit(zb, Fb_, "paraboloid", R=R, k_machine=k)
     assert max(abs(r.E / E - 1), abs(r.w / w - 1)) <= GRID_REL and abs(r.n_pinned - binary.n_pinned) <= 1, (
@@ -853,15 +872,32 @@ def test_written_irregular(case):
 # function of the z written but where the errors wrap, and mdr_f_zexact
 # takes such z for exact (its uneven steps come from the positions, not
 # the rounding): answered off with status ok where f81244a refused (47 of
-# 7 500 of the helper's curves; 40 refused before). The reported errors
-# do not include z's written precision; known defect (docs/fitting.md).
+# 7 500 of the helper's curves; 40 refused before). Where the errors do not
+# wrap, the z written is the true one scaled within a unit over the span:
+# since stop 80 the reported errors carry that scale (mdr_f_written's ez,
+# the column MDR_F_ZS), and 41 of the 47 lie within 5 errors, 2 refused.
+# The first case's grid drifts by 7.8 units, its rounding wraps 7 times
+# and its pinned top is lost (n_pinned 0, E* 1.17 x at 6.9 errors): known
+# defect (docs/fitting.md), a strict xfail.
 H83 = [  # (R, E, w, w_adv, k, n, top, free), kind, down, (phase, phase2, wraps) or (delta, phase, p, dropseed)
-    ((7.875887233871767e-08, 20818662451.856304, 0.04293499721508571, 0.021467498607542854, 0.25540310280160855, 980,
-      1.7249572590970275, 1.2985833146918482), 474682247, "drift", 2,
-     (0.07815235138305454, 0.03754733955187606, -7.806013693322661)),
+    pytest.param(
+        (7.875887233871767e-08, 20818662451.856304, 0.04293499721508571, 0.021467498607542854, 0.25540310280160855,
+         980, 1.7249572590970275, 1.2985833146918482), 474682247, "drift", 2,
+        (0.07815235138305454, 0.03754733955187606, -7.806013693322661),
+        marks=pytest.mark.xfail(strict=True, reason="known defect: a drifted grid whose rounding wraps, taken "
+                                "for exact z (mdr_f_zexact), loses its pinned top (helper-83)")),
     ((1.9616905935774065e-07, 5222287908.101501, 0.037268813397865426, 0.0, 0.071710210908473, 411,
       3.4653444591083344, 1.0143840836426683), 63033670, "lost", 2,
      (-0.00024255186989286562, 0.24083164574898752, 0.061501947719779425, 174228027)),
+    ((1.3329660730850428e-07, 18368490166.544613, 0.04146100573421805, 0.0, 0.06289339623519523, 668,
+      1.991371503362657, 1.3209194178795916), 105635330, "drift", 2,
+     (0.2974268321541855, 0.9643176044086891, 0.23689390447400133)),
+    ((1.9701302958615118e-07, 15003351571.774277, 0.09429688973906229, 0.047148444869531146, 0.07651452152127382,
+      111, 2.2579023994494873, 0.8844294646222476), 501810884, "drift", 2,
+     (0.7960714975513338, 0.6106128892372602, 0.640798944058442)),
+    ((2.700764269813582e-07, 6755231531.134417, 0.06401717557821139, 0.016004293894552848, 0.11312201963642013,
+      109, 2.1180465798731665, 1.0506210870641224), 1031384766, "lost", 2,
+     (-0.0006852598464537788, 0.8086975873263418, 0.11172450180974133, 713098713)),
 ]
 
 
@@ -890,11 +926,9 @@ def _h83_curve(args, seed, kind, down, q):
     return z, F
 
 
-@pytest.mark.xfail(strict=True, reason="known defect: z's written precision not in the reported errors (helper-83)")
-@pytest.mark.parametrize("case", range(len(H83)))
-def test_written_drift(case):
+@pytest.mark.parametrize("args, seed, kind, down, q", H83)
+def test_written_drift(args, seed, kind, down, q):
     """answered within PULL reported errors, or refused"""
-    args, seed, kind, down, q = H83[case]
     R, E, w, k = args[0], args[1], args[2], args[4]
     z, F = _h83_curve(args, seed, kind, down, q)
     try:
