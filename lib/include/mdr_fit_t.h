@@ -76,7 +76,9 @@ typedef struct {
                            between the last contact and the first free sample
                            as a nuisance of at most that interval's spread, and
                            that spread where the result is no minimum in the
-                           fold's position (mdr_fit.inc, docs/fitting.md);
+                           fold's position, and (f64) where z was written
+                           to a unit, z's scale within a unit over the
+                           contact's span (mdr_fit.inc, docs/fitting.md);
                            MDR_FIT_TWO_POINT: its two measurements' noise and
                            rounding and the step from the last contact sample
                            to the fold, propagated through the method */

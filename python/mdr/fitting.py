@@ -22,7 +22,7 @@ class FitResult:
     F_base [N] (force baseline at z0), F_slope [N/m] (the baseline's slope:
     it is F_base + F_slope (z - z0); 0 with flat_baseline=True; two-point:
     the free part's own line's), E_err, w_err, z0_err, F_base_err, F_slope_err (one
-    standard error each), mu (Tabor parameter), R_mu [m] (the tip radius in
+    standard error each; f64: with the unit z was written to, docs/fitting.md), mu (Tabor parameter), R_mu [m] (the tip radius in
     mu), z_e [m], regime ("JKR", "transition", "DMT"), rms [N] (residual),
     pull_off_F [N] (the model's pull-off force relative to the baseline,
     negative), pull_off_z [m], a_pull_off [m] (contact radius at pull-off),
