@@ -939,6 +939,51 @@ def test_written_drift(args, seed, kind, down, q):
     assert dev <= PULL, (r.E / E, r.w / w, dev, r.n_pinned)
 
 
+# helper-84's attack on z's written unit in the errors (stop 80): no answer
+# it found off or refused was answered otherwise at 6ac3dc8 (before the
+# unit), but these remain (known defects, docs/fitting.md; strict xfails):
+# z in nm written to 0.01 nm (w 8.9 errors off); z in nm stored as float32
+# (a binary rounding, no decimal unit: the pinned top lost, E* 1.17 x at 6.3
+# errors, n_pinned 0 against 181 in binary); z written "%.5g" in metres
+# across z = 0 (its unit changes through the curve: w 6.2 errors off, 12.6
+# at 6ac3dc8). Each: (R, E, w, w_adv, k, n, top, free, noise), z0, seed,
+# F's decimals in nN (None: as computed), how z is written.
+H84 = [
+    ((1.564457763186484e-08, 7288233456.740156, 0.018940801647576028, 0.004735200411894007, 0.14433217836146622,
+      203, 1.2921687349480506, 0.9169563152248117, 1e-4), 2.408576103543462e-06, 355346646, 4, "nm2"),
+    ((1.67062327060671e-08, 18715538126.604336, 0.020840723469855875, 0.005210180867463969, 0.06330888563165164,
+      595, 3.22226572911125, 0.8423429132768643, 0.0), -1.198157783822138e-06, 137984818, None, "nm_f32"),
+    ((5.096581048022764e-08, 782941201.3485187, 0.03850654268395559, 0.019253271341977796, 0.06886090936205053,
+      152, 3.664507497230163, 0.9398202346997135, 0.0), 0.0, 908535462, None, "g5"),
+]
+
+
+def _h84_write(z, how):
+    """z [m] as helper-84's files wrote it"""
+    if how == "nm2":
+        return np.array([float("%.2f" % v) for v in z * 1e9]) * 1e-9
+    if how == "nm_f32":
+        return (z * 1e9).astype(np.float32).astype(np.float64) * 1e-9
+    return np.array([float("%.5g" % v) for v in z])
+
+
+@pytest.mark.xfail(strict=True, reason="known defects: z written coarsely, in float32, or with a unit that changes "
+                   "through the curve (helper-84)")
+@pytest.mark.parametrize("args, z0, seed, fdec, how", H84)
+def test_written_helper84(args, z0, seed, fdec, how):
+    """answered within PULL reported errors, or refused"""
+    R, E, w, k = args[0], args[1], args[2], args[4]
+    z, F, _ = jkr_curves.curve(*args, z0=z0, Fb=0.1, seed=seed)
+    if fdec is not None:
+        F = np.array([float("%.*f" % (fdec, v)) for v in F * 1e9]) * 1e-9
+    try:
+        r = mdr.fit(_h84_write(z, how), F, "paraboloid", R=R, k_machine=k)
+    except mdr.Error:
+        return
+    dev = max(abs(r.E - E) / r.E_err, abs(r.w - w) / r.w_err)
+    assert dev <= PULL, (r.E / E, r.w / w, dev, r.n_pinned)
+
+
 # helper-80's noise-free curve that a 5 um piezo offset turned into a wrong
 # answer (E* 1.39 x, w 21 errors off, n_pinned 0; exact at 0, 2, 10 and
 # 15 um): z's rounding broke the pinned top's straight start (fixed at stop
