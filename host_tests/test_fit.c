@@ -159,7 +159,7 @@
  *     (measured: 18 answered, worst 1.63, 1.92 before stop 80; the rest refused).
  *   z a file's rounding whose errors drift linearly (test_written_drift,
  *     host only: the same 54 grids written exactly, F at them scaled about
- *     the bottom by -0.6 and +0.45 units over the span, DRIFT_UNITS): every
+ *     the bottom by -0.6 and +0.45 units over the span, DRIFT_LO/HI): every
  *     answer within DIGITS_PULL reported errors, at least DRIFT_MIN_OK = 80
  *     of the 108 answered (measured: 87, worst 1.49 errors; before stop
  *     80's errors with z's written unit, 72 of the 87 answers 8 to 30
@@ -341,7 +341,8 @@ MDR_TEST_NOT_APPLICABLE("the fit, f32, f64 and every profile")
 /* f64, noise-free curves as written down (test_written_digits) */
 #define DIGITS_PULL 5.0  /* every answer within this many reported errors */
 #define DIGITS_MIN_OK 54 /* of the 66 curves answered */
-static const double DRIFT_UNITS[2] = {-0.6, 0.45}; /* test_written_drift's scales of z, units over the span */
+#define DRIFT_LO (-0.6) /* test_written_drift's scales of z, units over the span */
+#define DRIFT_HI 0.45
 #define DRIFT_MIN_OK 80 /* of its 108 curves answered (measured: 87) */
 /* f64, noise-free pinned tops at piezo offsets (test_pinned_offset_clean) */
 #define PINOFF_REL 1e-8
@@ -2844,7 +2845,7 @@ static void test_written_irregular(void **state)
 
 /* A file's rounding of positions whose errors drift linearly (helper-83,
  * stop 79): test_written_irregular's uneven whole-unit grids written
- * exactly, F at them scaled about the bottom by DRIFT_UNITS units over the
+ * exactly, F at them scaled about the bottom by DRIFT_LO and DRIFT_HI units over the
  * span (a grid scaled by a calibration, or a progression near a whole
  * number of units, rounded; where the errors do not wrap, the z written is
  * the true one scaled and shifted within a unit, and F is smooth in it).
@@ -2863,7 +2864,7 @@ static void test_written_drift(void **state)
         {
             IRR_CASE;
             const jkr_par *p = &stiff[g];
-            const double drift = DRIFT_UNITS[c % 2];
+            const double drift = c % 2 == 0 ? DRIFT_LO : DRIFT_HI;
             mdr_fit_result_f64 r;
             double dev;
             if (irregular_fit(p, ratios[k] * p->w, offs[o], n, u, false, drift, &npin, &r) != MDR_OK) {
