@@ -2963,6 +2963,40 @@ static void test_written_nm(void **state)
     }
 }
 
+/* A curve recorded from a sweep (its z and F as the sweep wrote them) and
+ * the truth it was computed from */
+typedef struct {
+    const double *z, *F;
+    int n;
+    jkr_par p;
+} recorded_curve;
+
+/* Each of the n recorded curves refused, or answered within NMW_PULL
+ * reported errors */
+static void check_recorded(const recorded_curve *rec, unsigned n, const char *what)
+{
+    unsigned c;
+    for (c = 0; c < n; c++) {
+        const jkr_par *p = &rec[c].p;
+        const mdr_contact_f64 ct = paraboloid64(p->R);
+        mdr_fit_opts_f64 o;
+        mdr_fit_result_f64 r;
+        mdr_status st;
+        mdr_fit_defaults_f64(&o, p->km);
+        memcpy(zs, rec[c].z, (size_t)rec[c].n * sizeof zs[0]);
+        memcpy(Fs, rec[c].F, (size_t)rec[c].n * sizeof Fs[0]);
+        st = mdr_fit_curve_f64(&ct, &o, zs, Fs, (uint32_t)rec[c].n, work64, 2 * NMAX, &r);
+        if (st == MDR_OK) {
+            const double dev = fmax(fabs(r.E - p->E) / r.E_err, fabs(r.w - p->w) / r.w_err);
+            print_message("%s, curve %u: E* %.4f x, w %.4f x, %.2f errors, n_pinned %u\n", what, c, r.E / p->E,
+                          r.w / p->w, dev, (unsigned)r.n_pinned);
+            assert_true(dev <= NMW_PULL);
+        } else {
+            print_message("%s, curve %u: %s\n", what, c, mdr_status_str(st));
+        }
+    }
+}
+
 /* Noise-free curves whose z a file rounded, answered wrong with their
  * pinned tops lost where the fold-end test allowed for z's rounding in
  * noise-free data too (stop 81: E* 1.33 x and 1.36 x, w 0.90 x and 0.86 x
@@ -3058,35 +3092,12 @@ static const double dup17_F[66] = {
 
 static void test_written_noisefree_end(void **state)
 {
-    static const struct {
-        const double *z, *F;
-        int n;
-        jkr_par p;
-    } rec[] = {
+    static const recorded_curve rec[] = {
         {nl169_z, nl169_F, 88, {7.1539521850240185e-08, 3191798784.29638, 0.0033408529782751576, 1.0874309291225659}},
         {dup17_z, dup17_F, 66, {3.1479311779295863e-07, 5484200886.8907709, 0.024915812146639828, 7.0047351004010174}},
     };
-    unsigned c;
     (void)state;
-    for (c = 0; c < sizeof rec / sizeof rec[0]; c++) {
-        const jkr_par *p = &rec[c].p;
-        const mdr_contact_f64 ct = paraboloid64(p->R);
-        mdr_fit_opts_f64 o;
-        mdr_fit_result_f64 r;
-        mdr_status st;
-        mdr_fit_defaults_f64(&o, p->km);
-        memcpy(zs, rec[c].z, (size_t)rec[c].n * sizeof zs[0]);
-        memcpy(Fs, rec[c].F, (size_t)rec[c].n * sizeof Fs[0]);
-        st = mdr_fit_curve_f64(&ct, &o, zs, Fs, (uint32_t)rec[c].n, work64, 2 * NMAX, &r);
-        if (st == MDR_OK) {
-            const double dev = fmax(fabs(r.E - p->E) / r.E_err, fabs(r.w - p->w) / r.w_err);
-            print_message("recorded curve %u: E* %.4f x, w %.4f x, %.2f errors, n_pinned %u\n", c, r.E / p->E,
-                          r.w / p->w, dev, (unsigned)r.n_pinned);
-            assert_true(dev <= NMW_PULL);
-        } else {
-            print_message("recorded curve %u: %s\n", c, mdr_status_str(st));
-        }
-    }
+    check_recorded(rec, sizeof rec / sizeof rec[0], "noise-free, z rounded");
 }
 
 /* A noisy curve (sweep_nm.py's 149th: z written to 0.1 nm, 0.24 nm steps,
@@ -3424,34 +3435,11 @@ static const double nm1a_F[686] = {
 
 static void test_written_nm_coarse(void **state)
 {
-    static const struct {
-        const double *z, *F;
-        int n;
-        jkr_par p;
-    } rec[] = {
+    static const recorded_curve rec[] = {
         {nm1a_z, nm1a_F, 686, {7.4217842253122984e-09, 2396332679.357213, 0.084644143368660121, 0.25667922133670634}},
     };
-    unsigned c;
     (void)state;
-    for (c = 0; c < sizeof rec / sizeof rec[0]; c++) {
-        const jkr_par *p = &rec[c].p;
-        const mdr_contact_f64 ct = paraboloid64(p->R);
-        mdr_fit_opts_f64 o;
-        mdr_fit_result_f64 r;
-        mdr_status st;
-        mdr_fit_defaults_f64(&o, p->km);
-        memcpy(zs, rec[c].z, (size_t)rec[c].n * sizeof zs[0]);
-        memcpy(Fs, rec[c].F, (size_t)rec[c].n * sizeof Fs[0]);
-        st = mdr_fit_curve_f64(&ct, &o, zs, Fs, (uint32_t)rec[c].n, work64, 2 * NMAX, &r);
-        if (st == MDR_OK) {
-            const double dev = fmax(fabs(r.E - p->E) / r.E_err, fabs(r.w - p->w) / r.w_err);
-            print_message("z to 0.1 nm, curve %u: E* %.4f x, w %.4f x, %.2f errors, n_pinned %u\n", c, r.E / p->E,
-                          r.w / p->w, dev, (unsigned)r.n_pinned);
-            assert_true(dev <= NMW_PULL);
-        } else {
-            print_message("z to 0.1 nm, curve %u: %s\n", c, mdr_status_str(st));
-        }
-    }
+    check_recorded(rec, sizeof rec / sizeof rec[0], "z to 0.1 nm");
 }
 
 /* One glitch in a noisy pinned top (helper-80, stop 76: one sample 14 % of
